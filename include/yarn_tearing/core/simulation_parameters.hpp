@@ -1,0 +1,39 @@
+#pragma once
+
+#include <Eigen/Core>
+
+namespace yarn_tearing {
+
+/// How the length constraints are enforced (stage 3 of a step).
+enum class ProjectionMethod {
+  /// Fast projection (Goldenthal et al. 2007): Newton steps on the active constraints with a direct
+  /// (banded for chains, sparse LDLT otherwise) solve. Converges at any mass ratio.
+  kFastProjection,
+  /// Gauss–Seidel sweeps over the edges (Provot / PBD). Cheaper, but does not converge at large
+  /// mass ratios; stops after max_projection_iterations sweeps.
+  kGaussSeidel,
+};
+
+/// Parameters of the whole simulation, shared by all yarns.
+struct SimulationParameters {
+  double time_step = 1.0e-3;  ///< physics step dt [s]
+  Eigen::Vector3d gravity = Eigen::Vector3d(0.0, 0.0, -9.81);  ///< [m/s^2]
+  /// Linear air damping c [N*s/m^2]: each vertex feels -c * (its share of yarn length) * velocity.
+  double air_damping = 0.0;
+  /// Dimensionless stiffness of the soft (non-stiff) springs: each edge's spring constant is
+  /// ratio * m_min / dt^2 [N/m], m_min the lighter free vertex; stable for ratio < 1.
+  double soft_spring_ratio = 0.05;
+  /// Regularization lambda of the tension least squares [-], relative to the diagonal of the
+  /// normal matrix (so it is independent of units and masses); paper §3.2 uses 1e-6.
+  double regularization = 1.0e-6;
+  /// Largest relative violation (|x_i - x_j| - limit) / limit accepted by the projection [-].
+  double constraint_tolerance = 1.0e-6;
+  int max_projection_iterations = 50;   ///< Newton steps (or Gauss–Seidel sweeps) per step
+  ProjectionMethod projection_method = ProjectionMethod::kFastProjection;
+  bool breaking_enabled = true;         ///< false: yarns never tear (yield still acts)
+
+  /// Throws std::invalid_argument naming the parameter and the allowed range.
+  void validate() const;
+};
+
+}  // namespace yarn_tearing

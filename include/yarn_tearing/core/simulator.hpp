@@ -1,0 +1,67 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "yarn_tearing/core/break_event.hpp"
+#include "yarn_tearing/core/scene.hpp"
+#include "yarn_tearing/core/simulation_parameters.hpp"
+#include "yarn_tearing/core/step_health.hpp"
+#include "yarn_tearing/core/step_workspace.hpp"
+
+namespace yarn_tearing {
+
+/// Simulates tearable, length-constrained yarns (the paper's method). Deterministic: the same
+/// inputs give bitwise the same outputs. Not thread-safe; one thread drives it.
+class Simulator {
+ public:
+  /// Throws std::invalid_argument (naming the parameter) on invalid parameters or yarn specs.
+  Simulator(const SimulationParameters& parameters, const std::vector<YarnSpec>& yarns);
+
+  /// Advances the simulation by parameters().time_step. The stages, in order:
+  /// 1 accumulate forces, 2 predict (symplectic Euler), 3 project length constraints,
+  /// 4 estimate tensions, 5 update material (strain limit, yield), 6 tear (collected, then applied).
+  void step();
+
+  /// Back to the initial scene and time 0; applied forces, grasps and pending events cleared.
+  void reset();
+
+  /// Sets the external force on a vertex (global id) [N]; replaces the previous one.
+  void setAppliedForce(std::uint32_t vertex, const Eigen::Vector3d& force);
+  /// Makes a vertex kinematic: from the next step it moves to `target` [m] (global id).
+  void setKinematicTarget(std::uint32_t vertex, const Eigen::Vector3d& target);
+  /// Frees a kinematic vertex (or restores the pin of an initially pinned one).
+  void releaseVertex(std::uint32_t vertex);
+
+  /// Break events since the last call, in the order they happened; each is returned once.
+  std::vector<BreakEvent> takeBreakEvents();
+
+  /// Force the yarn exerts on the holder of a pinned or kinematic vertex [N] (zero if free).
+  Eigen::Vector3d supportForce(std::uint32_t vertex) const { return support_force_[vertex]; }
+
+  const Scene& scene() const { return scene_; }
+  const SimulationParameters& parameters() const { return parameters_; }
+  const StepHealth& lastHealth() const { return health_; }
+  double time() const { return time_; }                 ///< simulated time [s]
+  std::uint64_t stepCount() const { return step_count_; }
+
+ private:
+  void accumulateForces();
+  void predictPositions();
+  void projectLengthConstraints();
+  void estimateTensions();
+  void updateMaterial();
+  void tear();
+
+  SimulationParameters parameters_;
+  Scene initial_scene_;
+  Scene scene_;
+  StepWorkspace work_;
+  std::vector<Eigen::Vector3d> support_force_;
+  std::vector<BreakEvent> pending_events_;
+  StepHealth health_;
+  double time_ = 0.0;
+  std::uint64_t step_count_ = 0;
+};
+
+}  // namespace yarn_tearing

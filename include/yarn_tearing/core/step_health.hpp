@@ -1,0 +1,14 @@
+#pragma once
+
+namespace yarn_tearing {
+
+/// Numerical health of one step.
+struct StepHealth {
+  double max_constraint_violation = 0.0;  ///< max (length - limit) / limit after projection [-]
+  int projection_iterations = 0;          ///< Newton steps or sweeps used
+  bool projection_converged = true;       ///< violation within constraint_tolerance
+  double tension_residual = 0.0;          ///< |A T - b| / |b| of the tension least squares [-]
+  int breaks = 0;                         ///< edges torn in this step
+};
+
+}  // namespace yarn_tearing

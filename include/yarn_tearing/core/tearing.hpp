@@ -1,0 +1,32 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "yarn_tearing/core/break_event.hpp"
+#include "yarn_tearing/core/scene.hpp"
+
+namespace yarn_tearing {
+
+/// Stage 6: an edge tears when its strain reaches its breaking strain (the material's, times the
+/// edge's strength factor). When one segment fails the load drops everywhere, so each step tears
+/// at most the most over-strained edge of each connected piece. Breaks are collected first and
+/// applied after, so the topology never changes while they are chosen.
+class Tearing {
+ public:
+  /// Global ids of the edges to tear this step (ordered by edge id).
+  const std::vector<std::uint32_t>& collect(const Scene& scene);
+  /// Tears the collected edges and appends one event each (time = `time` [s]).
+  void apply(Scene& scene, double time, std::vector<BreakEvent>& events);
+
+ private:
+  std::uint32_t findRoot(std::uint32_t v);
+
+  std::vector<std::uint32_t> parent_;        ///< union-find over vertices
+  std::vector<std::int64_t> best_of_piece_;  ///< per root: most over-strained edge, or -1
+  std::vector<double> best_ratio_;           ///< per root: its strain / breaking strain
+  std::vector<std::uint32_t> collected_;
+};
+
+}  // namespace yarn_tearing

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "yarn_tearing/core/material.hpp"
+
+namespace yarn_tearing {
+
+/// One yarn of a scene: a contiguous range of vertices and edges sharing a material.
+struct Yarn {
+  std::string name;
+  Material material;
+  double radius = 0.0;              ///< radius used for drawing and reporting [m]
+  std::uint32_t first_vertex = 0;   ///< global id of the yarn's vertex 0
+  std::uint32_t num_vertices = 0;
+  std::uint32_t first_edge = 0;     ///< global id of the yarn's edge 0
+  std::uint32_t num_edges = 0;
+};
+
+}  // namespace yarn_tearing

@@ -1,0 +1,200 @@
+#include "yarn_tearing/core/simulator.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "yarn_tearing/core/material_response.hpp"
+
+namespace yarn_tearing {
+namespace {
+
+/// Soft-spring constant of an edge [N/m]: ratio * (lighter free vertex mass) / dt^2.
+double softSpringConstant(const VertexSet& vertices, std::uint32_t a, std::uint32_t b,
+                          const SimulationParameters& p) {
+  double lighter = 0.0;
+  if (!vertices.isSupport(a)) lighter = vertices.mass[a];
+  if (!vertices.isSupport(b)) {
+    lighter = lighter > 0.0 ? std::min(lighter, vertices.mass[b]) : vertices.mass[b];
+  }
+  return p.soft_spring_ratio * lighter / (p.time_step * p.time_step);
+}
+
+void requireVertex(const Scene& scene, std::uint32_t vertex) {
+  if (vertex >= scene.vertices.size()) {
+    throw std::out_of_range("vertex " + std::to_string(vertex) + " out of range [0, " +
+                            std::to_string(scene.vertices.size()) + ")");
+  }
+}
+
+}  // namespace
+
+Simulator::Simulator(const SimulationParameters& parameters, const std::vector<YarnSpec>& yarns)
+    : parameters_(parameters), initial_scene_(buildScene(yarns)) {
+  parameters_.validate();
+  reset();
+}
+
+void Simulator::reset() {
+  scene_ = initial_scene_;
+  const std::size_t n = scene_.vertices.size();
+  work_.force.assign(n, Eigen::Vector3d::Zero());
+  work_.start_position.assign(n, Eigen::Vector3d::Zero());
+  work_.start_velocity.assign(n, Eigen::Vector3d::Zero());
+  work_.constraint_tension.assign(scene_.edges.size(), 0.0);
+  work_.gram.setTopology(scene_.edges, n);
+  support_force_.assign(n, Eigen::Vector3d::Zero());
+  pending_events_.clear();
+  health_ = StepHealth{};
+  time_ = 0.0;
+  step_count_ = 0;
+}
+
+void Simulator::step() {
+  accumulateForces();          // 1
+  predictPositions();          // 2
+  projectLengthConstraints();  // 3
+  estimateTensions();          // 4
+  updateMaterial();            // 5
+  time_ += parameters_.time_step;
+  ++step_count_;
+  tear();                      // 6
+}
+
+void Simulator::accumulateForces() {
+  VertexSet& vertices = scene_.vertices;
+  EdgeSet& edges = scene_.edges;
+  for (std::size_t v = 0; v < vertices.size(); ++v) {
+    work_.force[v] = vertices.mass[v] * parameters_.gravity + vertices.applied_force[v] -
+                     parameters_.air_damping * vertices.damping_length[v] * vertices.velocity[v];
+  }
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    edges.spring_tension[e] = 0.0;
+    if (!edges.intact(e)) continue;
+    const std::uint32_t a = edges.vertex_a[e];
+    const std::uint32_t b = edges.vertex_b[e];
+    const Eigen::Vector3d d = vertices.position[b] - vertices.position[a];
+    const double length = d.norm();
+    const double stretch = length - edges.rest_length[e];
+    if (!(stretch > 0.0)) continue;  // yarns do not resist compression
+    const double tension = softSpringConstant(vertices, a, b, parameters_) * stretch;
+    edges.spring_tension[e] = tension;
+    const Eigen::Vector3d f = (tension / length) * d;
+    work_.force[a] += f;
+    work_.force[b] -= f;
+  }
+}
+
+void Simulator::predictPositions() {
+  VertexSet& vertices = scene_.vertices;
+  const double dt = parameters_.time_step;
+  work_.start_position = vertices.position;
+  work_.start_velocity = vertices.velocity;
+  for (std::size_t v = 0; v < vertices.size(); ++v) {
+    switch (vertices.motion[v]) {
+      case VertexMotion::kFree:
+        vertices.velocity[v] += (dt / vertices.mass[v]) * work_.force[v];
+        vertices.position[v] += dt * vertices.velocity[v];
+        break;
+      case VertexMotion::kPinned:
+        vertices.velocity[v].setZero();
+        break;
+      case VertexMotion::kKinematic:
+        vertices.velocity[v] = (vertices.kinematic_target[v] - vertices.position[v]) / dt;
+        vertices.position[v] = vertices.kinematic_target[v];
+        break;
+    }
+  }
+}
+
+void Simulator::projectLengthConstraints() {
+  VertexSet& vertices = scene_.vertices;
+  const ProjectionResult result = work_.projection.project(vertices.position, vertices,
+                                                           scene_.edges, parameters_, work_.gram);
+  health_.projection_iterations = result.iterations;
+  health_.max_constraint_violation = result.max_violation;
+  health_.projection_converged = result.converged;
+  const double dt = parameters_.time_step;
+  for (std::size_t v = 0; v < vertices.size(); ++v) {
+    if (vertices.motion[v] == VertexMotion::kFree) {
+      vertices.velocity[v] = (vertices.position[v] - work_.start_position[v]) / dt;
+    }
+  }
+}
+
+void Simulator::estimateTensions() {
+  TensionEstimateInput input;
+  input.vertices = &scene_.vertices;
+  input.start_velocity = &work_.start_velocity;
+  input.force = &work_.force;
+  input.time_step = parameters_.time_step;
+  input.regularization = parameters_.regularization;
+  health_.tension_residual =
+      work_.estimator.estimate(input, scene_.edges, work_.gram, work_.constraint_tension);
+
+  // Total axial force, and what the supports feel: F_v + constraint pull - m a.
+  const VertexSet& vertices = scene_.vertices;
+  EdgeSet& edges = scene_.edges;
+  const double dt = parameters_.time_step;
+  for (std::size_t v = 0; v < vertices.size(); ++v) {
+    support_force_[v].setZero();
+    if (!vertices.isSupport(v)) continue;
+    support_force_[v] = work_.force[v] - vertices.mass[v] / dt *
+                                              (vertices.velocity[v] - work_.start_velocity[v]);
+  }
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (!edges.intact(e)) continue;
+    edges.tension[e] = work_.constraint_tension[e] + edges.spring_tension[e];
+    const std::uint32_t a = edges.vertex_a[e];
+    const std::uint32_t b = edges.vertex_b[e];
+    const Eigen::Vector3d d = vertices.position[b] - vertices.position[a];
+    const double length = d.norm();
+    if (!(length > 0.0)) continue;
+    const Eigen::Vector3d pull = (work_.constraint_tension[e] / length) * d;
+    if (vertices.isSupport(a)) support_force_[a] += pull;
+    if (vertices.isSupport(b)) support_force_[b] -= pull;
+  }
+}
+
+void Simulator::updateMaterial() {
+  updateMaterialResponse(scene_.yarns, scene_.vertices.position, parameters_.time_step,
+                         parameters_.constraint_tolerance, scene_.edges);
+}
+
+void Simulator::tear() {
+  health_.breaks = 0;
+  if (!parameters_.breaking_enabled) return;
+  const std::vector<std::uint32_t>& torn = work_.tearing.collect(scene_);
+  health_.breaks = static_cast<int>(torn.size());
+  for (std::uint32_t e : torn) work_.constraint_tension[e] = 0.0;
+  work_.tearing.apply(scene_, time_, pending_events_);
+}
+
+void Simulator::setAppliedForce(std::uint32_t vertex, const Eigen::Vector3d& force) {
+  requireVertex(scene_, vertex);
+  if (!force.allFinite()) throw std::invalid_argument("applied force must be finite");
+  scene_.vertices.applied_force[vertex] = force;
+}
+
+void Simulator::setKinematicTarget(std::uint32_t vertex, const Eigen::Vector3d& target) {
+  requireVertex(scene_, vertex);
+  if (!target.allFinite()) throw std::invalid_argument("kinematic target must be finite");
+  scene_.vertices.motion[vertex] = VertexMotion::kKinematic;
+  scene_.vertices.kinematic_target[vertex] = target;
+}
+
+void Simulator::releaseVertex(std::uint32_t vertex) {
+  requireVertex(scene_, vertex);
+  if (scene_.vertices.motion[vertex] != VertexMotion::kKinematic) return;
+  const bool was_pinned = initial_scene_.vertices.motion[vertex] == VertexMotion::kPinned;
+  scene_.vertices.motion[vertex] = was_pinned ? VertexMotion::kPinned : VertexMotion::kFree;
+  if (was_pinned) scene_.vertices.velocity[vertex].setZero();
+}
+
+std::vector<BreakEvent> Simulator::takeBreakEvents() {
+  std::vector<BreakEvent> events;
+  events.swap(pending_events_);
+  return events;
+}
+
+}  // namespace yarn_tearing

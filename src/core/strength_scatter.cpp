@@ -1,0 +1,32 @@
+#include "yarn_tearing/core/strength_scatter.hpp"
+
+#include <cmath>
+#include <cstdint>
+
+namespace yarn_tearing {
+namespace {
+
+std::uint64_t splitmix64(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+
+}  // namespace
+
+std::vector<double> strengthFactors(const StrengthScatter& scatter, std::size_t count) {
+  std::vector<double> factors(count, 1.0);
+  if (scatter.weibull_modulus <= 0.0) return factors;
+  const double m = scatter.weibull_modulus;
+  const double mean = std::tgamma(1.0 + 1.0 / m);  // mean of a unit-scale Weibull
+  std::uint64_t state = scatter.seed;
+  for (double& f : factors) {
+    // Uniform in (0, 1): 53 random bits, offset by half a unit so 0 never occurs.
+    const double u = (static_cast<double>(splitmix64(state) >> 11) + 0.5) * 0x1.0p-53;
+    f = std::pow(-std::log(u), 1.0 / m) / mean;
+  }
+  return factors;
+}
+
+}  // namespace yarn_tearing

@@ -1,0 +1,85 @@
+#include "yarn_tearing/core/tearing.hpp"
+
+#include <algorithm>
+
+namespace yarn_tearing {
+namespace {
+
+double overstrain(const Scene& scene, std::size_t e) {
+  const EdgeSet& edges = scene.edges;
+  const double breaking = scene.yarns[edges.yarn[e]].material.curve.breakingStrain();
+  return edges.strain[e] / (breaking * edges.strength_factor[e]);
+}
+
+}  // namespace
+
+std::uint32_t Tearing::findRoot(std::uint32_t v) {
+  while (parent_[v] != v) {
+    parent_[v] = parent_[parent_[v]];
+    v = parent_[v];
+  }
+  return v;
+}
+
+const std::vector<std::uint32_t>& Tearing::collect(const Scene& scene) {
+  collected_.clear();
+  const EdgeSet& edges = scene.edges;
+  bool any = false;
+  for (std::size_t e = 0; e < edges.size() && !any; ++e) {
+    any = edges.intact(e) && overstrain(scene, e) >= 1.0;
+  }
+  if (!any) return collected_;
+
+  const std::size_t n = scene.vertices.size();
+  parent_.resize(n);
+  for (std::size_t v = 0; v < n; ++v) parent_[v] = static_cast<std::uint32_t>(v);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (edges.intact(e)) parent_[findRoot(edges.vertex_a[e])] = findRoot(edges.vertex_b[e]);
+  }
+  best_of_piece_.assign(n, -1);
+  best_ratio_.assign(n, 0.0);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (!edges.intact(e)) continue;
+    const double ratio = overstrain(scene, e);
+    const std::uint32_t root = findRoot(edges.vertex_a[e]);
+    if (ratio >= 1.0 && ratio > best_ratio_[root]) {
+      best_ratio_[root] = ratio;
+      best_of_piece_[root] = static_cast<std::int64_t>(e);
+    }
+  }
+  for (std::size_t v = 0; v < n; ++v) {
+    if (best_of_piece_[v] >= 0) collected_.push_back(static_cast<std::uint32_t>(best_of_piece_[v]));
+  }
+  std::sort(collected_.begin(), collected_.end());
+  return collected_;
+}
+
+void Tearing::apply(Scene& scene, double time, std::vector<BreakEvent>& events) {
+  EdgeSet& edges = scene.edges;
+  for (std::uint32_t e : collected_) {
+    const Yarn& yarn = scene.yarns[edges.yarn[e]];
+    BreakEvent event;
+    event.yarn = edges.yarn[e];
+    event.edge = e - yarn.first_edge;
+    event.vertex_a = edges.vertex_a[e] - yarn.first_vertex;
+    event.vertex_b = edges.vertex_b[e] - yarn.first_vertex;
+    event.position =
+        0.5 * (scene.vertices.position[edges.vertex_a[e]] + scene.vertices.position[edges.vertex_b[e]]);
+    event.time = time;
+    event.tension = edges.tension[e];
+    event.stress = edges.stress[e];
+    event.strain = edges.strain[e];
+    event.plastic_strain = edges.plastic_strain[e];
+    event.strain_rate = edges.strain_rate[e];
+    events.push_back(event);
+
+    edges.broken[e] = 1;
+    edges.tension[e] = 0.0;
+    edges.spring_tension[e] = 0.0;
+    edges.stress[e] = 0.0;
+    edges.strain_rate[e] = 0.0;
+  }
+  collected_.clear();
+}
+
+}  // namespace yarn_tearing
