@@ -10,10 +10,6 @@ double roleSign(const EdgeSet& edges, std::size_t e, std::size_t f, std::uint32_
   return e_is_b == f_is_b ? 1.0 : -1.0;
 }
 
-double selfWeight(const EdgeSet& edges, const std::vector<double>& w, std::size_t e) {
-  return w[edges.vertex_a[e]] + w[edges.vertex_b[e]];
-}
-
 }  // namespace
 
 void EdgeGramSolver::setTopology(const EdgeSet& edges, std::size_t num_vertices) {
@@ -36,39 +32,47 @@ void EdgeGramSolver::setTopology(const EdgeSet& edges, std::size_t num_vertices)
     incidence_edge_[fill[edges.vertex_b[e]]++] = static_cast<std::uint32_t>(e);
   }
   diagonal_.resize(edges.size());
+  included_.resize(edges.size());
   upper_.resize(edges.size());
   sweep_.resize(edges.size());
 }
 
-void EdgeGramSolver::solve(const EdgeSet& edges, const std::vector<Eigen::Vector3d>& direction,
-                           const std::vector<double>& vertex_weight,
-                           const std::vector<std::uint8_t>& active, double regularization,
-                           const std::vector<double>* anchor, std::vector<double>& rhs) {
+void EdgeGramSolver::solve(const EdgeSet& edges, const GramSystem& system,
+                           std::vector<double>& rhs) {
+  assembleDiagonal(edges, system, rhs);
   if (usesBandedPath()) {
-    solveBanded(edges, direction, vertex_weight, active, regularization, anchor, rhs);
+    solveBanded(edges, system, rhs);
   } else {
-    solveGeneral(edges, direction, vertex_weight, active, regularization, anchor, rhs);
+    solveGeneral(edges, system, rhs);
   }
 }
 
-void EdgeGramSolver::solveBanded(const EdgeSet& edges,
-                                 const std::vector<Eigen::Vector3d>& direction,
-                                 const std::vector<double>& w,
-                                 const std::vector<std::uint8_t>& active, double regularization,
-                                 const std::vector<double>* anchor, std::vector<double>& rhs) {
-  const std::size_t q = edges.size();
-  for (std::size_t e = 0; e < q; ++e) {
-    const double g = active[e] ? selfWeight(edges, w, e) : 0.0;
-    if (g > 0.0) {
-      diagonal_[e] = g * (1.0 + regularization);
-      if (anchor != nullptr) rhs[e] += regularization * g * (*anchor)[e];
-    } else {
+void EdgeGramSolver::assembleDiagonal(const EdgeSet& edges, const GramSystem& system,
+                                      std::vector<double>& rhs) {
+  const std::vector<double>& w = *system.vertex_weight;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const double g = (*system.active)[e] ? w[edges.vertex_a[e]] + w[edges.vertex_b[e]] : 0.0;
+    included_[e] = g > 0.0 ? 1 : 0;
+    if (!included_[e]) {
       diagonal_[e] = 1.0;
       rhs[e] = 0.0;
+      continue;
     }
-    const bool coupled = e + 1 < q && active[e] && active[e + 1] &&
+    diagonal_[e] = g * (1.0 + system.regularization);
+    if (system.diagonal_shift != nullptr) diagonal_[e] += (*system.diagonal_shift)[e];
+    if (system.anchor != nullptr) rhs[e] += system.regularization * g * (*system.anchor)[e];
+  }
+}
+
+void EdgeGramSolver::solveBanded(const EdgeSet& edges, const GramSystem& system,
+                                 std::vector<double>& rhs) {
+  const std::vector<double>& w = *system.vertex_weight;
+  const std::vector<Eigen::Vector3d>& n = *system.direction;
+  const std::size_t q = edges.size();
+  for (std::size_t e = 0; e < q; ++e) {
+    const bool coupled = e + 1 < q && included_[e] && included_[e + 1] &&
                          edges.vertex_b[e] == edges.vertex_a[e + 1];
-    upper_[e] = coupled ? -w[edges.vertex_b[e]] * direction[e].dot(direction[e + 1]) : 0.0;
+    upper_[e] = coupled ? -w[edges.vertex_b[e]] * n[e].dot(n[e + 1]) : 0.0;
   }
   // Thomas algorithm (the matrix is symmetric positive definite, no pivoting needed).
   double previous_sweep = 0.0;
@@ -84,29 +88,21 @@ void EdgeGramSolver::solveBanded(const EdgeSet& edges,
   for (std::size_t e = q; e-- > 1;) rhs[e - 1] -= sweep_[e - 1] * rhs[e];
 }
 
-void EdgeGramSolver::solveGeneral(const EdgeSet& edges,
-                                  const std::vector<Eigen::Vector3d>& direction,
-                                  const std::vector<double>& w,
-                                  const std::vector<std::uint8_t>& active, double regularization,
-                                  const std::vector<double>* anchor, std::vector<double>& rhs) {
+void EdgeGramSolver::solveGeneral(const EdgeSet& edges, const GramSystem& system,
+                                  std::vector<double>& rhs) {
+  const std::vector<double>& w = *system.vertex_weight;
+  const std::vector<Eigen::Vector3d>& n = *system.direction;
   const std::size_t q = edges.size();
   triplets_.clear();
   for (std::size_t e = 0; e < q; ++e) {
-    const double g = active[e] ? selfWeight(edges, w, e) : 0.0;
-    if (!(g > 0.0)) {
-      triplets_.emplace_back(e, e, 1.0);
-      rhs[e] = 0.0;
-      continue;
-    }
-    triplets_.emplace_back(e, e, g * (1.0 + regularization));
-    if (anchor != nullptr) rhs[e] += regularization * g * (*anchor)[e];
+    triplets_.emplace_back(e, e, diagonal_[e]);
+    if (!included_[e]) continue;
     for (std::uint32_t v : {edges.vertex_a[e], edges.vertex_b[e]}) {
       if (w[v] == 0.0) continue;
       for (std::uint32_t k = incidence_offset_[v]; k < incidence_offset_[v + 1]; ++k) {
         const std::uint32_t f = incidence_edge_[k];
-        if (f == e || !active[f] || !(selfWeight(edges, w, f) > 0.0)) continue;
-        const double value = w[v] * roleSign(edges, e, f, v) * direction[e].dot(direction[f]);
-        triplets_.emplace_back(e, f, value);
+        if (f == e || !included_[f]) continue;
+        triplets_.emplace_back(e, f, w[v] * roleSign(edges, e, f, v) * n[e].dot(n[f]));
       }
     }
   }

@@ -1,19 +1,25 @@
 #include "yarn_tearing/core/length_constraint_projection.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace yarn_tearing {
 
 ProjectionResult LengthConstraintProjection::project(std::vector<Eigen::Vector3d>& position,
                                                      const VertexSet& vertices,
                                                      const EdgeSet& edges,
+                                                     const std::vector<double>& compliance,
                                                      const SimulationParameters& parameters,
                                                      EdgeGramSolver& gram) {
+  time_step2_ = parameters.time_step * parameters.time_step;
   inverse_mass_.resize(vertices.size());
   for (std::size_t v = 0; v < vertices.size(); ++v) inverse_mass_[v] = vertices.inverseMass(v);
   const std::size_t q = edges.size();
+  shift_.resize(q);
+  for (std::size_t e = 0; e < q; ++e) shift_[e] = compliance[e] / time_step2_;
   direction_.resize(q);
-  violation_.resize(q);
+  residual_.resize(q);
+  limit_.resize(q);
   step_.resize(q);
   active_.resize(q);
   multiplier_.assign(q, 0.0);
@@ -36,11 +42,13 @@ double LengthConstraintProjection::evaluate(const std::vector<Eigen::Vector3d>& 
     }
     const Eigen::Vector3d d = position[b] - position[a];
     const double length = d.norm();
-    const double limit = edges.rest_length[e] * (1.0 + edges.strain_limit[e]);
     direction_[e] = length > 0.0 ? Eigen::Vector3d(d / length) : Eigen::Vector3d::Zero();
-    violation_[e] = length - limit;
-    active_[e] = (violation_[e] > 0.0 || multiplier_[e] > 0.0) ? 1 : 0;
-    max_violation = std::max(max_violation, violation_[e] / limit);
+    limit_[e] = edges.rest_length[e] + shift_[e] * multiplier_[e];
+    residual_[e] = length - limit_[e];
+    const bool holding = multiplier_[e] > 0.0;
+    active_[e] = (residual_[e] > 0.0 || holding) ? 1 : 0;
+    const double violation = holding ? std::abs(residual_[e]) : std::max(residual_[e], 0.0);
+    max_violation = std::max(max_violation, violation / limit_[e]);
   }
   return max_violation;
 }
@@ -49,13 +57,18 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
                                                          const EdgeSet& edges,
                                                          const SimulationParameters& parameters,
                                                          EdgeGramSolver& gram) {
+  GramSystem system;
+  system.direction = &direction_;
+  system.vertex_weight = &inverse_mass_;
+  system.active = &active_;
+  system.diagonal_shift = &shift_;
   ProjectionResult result;
   for (;;) {
     result.max_violation = evaluate(position, edges);
     result.converged = result.max_violation <= parameters.constraint_tolerance;
     if (result.converged || result.iterations >= parameters.max_projection_iterations) break;
-    for (std::size_t e = 0; e < edges.size(); ++e) step_[e] = active_[e] ? violation_[e] : 0.0;
-    gram.solve(edges, direction_, inverse_mass_, active_, 0.0, nullptr, step_);
+    for (std::size_t e = 0; e < edges.size(); ++e) step_[e] = active_[e] ? residual_[e] : 0.0;
+    gram.solve(edges, system, step_);
     for (std::size_t e = 0; e < edges.size(); ++e) {
       if (!active_[e]) continue;
       // Projected Newton: the accumulated multiplier may not turn compressive.
@@ -85,10 +98,12 @@ ProjectionResult LengthConstraintProjection::projectGaussSeidel(
       const std::uint32_t b = edges.vertex_b[e];
       const Eigen::Vector3d d = position[b] - position[a];
       const double length = d.norm();
-      const double excess = length - edges.rest_length[e] * (1.0 + edges.strain_limit[e]);
-      if (!(excess > 0.0)) continue;
+      const double residual = length - edges.rest_length[e] - shift_[e] * multiplier_[e];
+      const double denominator = inverse_mass_[a] + inverse_mass_[b] + shift_[e];
+      const double dl = std::max(residual / denominator, -multiplier_[e]);
+      if (dl == 0.0 || !(length > 0.0)) continue;
+      multiplier_[e] += dl;
       const Eigen::Vector3d n = d / length;
-      const double dl = excess / (inverse_mass_[a] + inverse_mass_[b]);
       position[a] += (inverse_mass_[a] * dl) * n;
       position[b] -= (inverse_mass_[b] * dl) * n;
     }

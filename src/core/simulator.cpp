@@ -42,7 +42,9 @@ void Simulator::reset() {
   work_.start_position.assign(n, Eigen::Vector3d::Zero());
   work_.start_velocity.assign(n, Eigen::Vector3d::Zero());
   work_.constraint_tension.assign(scene_.edges.size(), 0.0);
+  work_.compliance.assign(scene_.edges.size(), 0.0);
   work_.gram.setTopology(scene_.edges, n);
+  work_.gram.forceGeneralPath(parameters_.force_general_solver);
   support_force_.assign(n, Eigen::Vector3d::Zero());
   pending_events_.clear();
   health_ = StepHealth{};
@@ -109,8 +111,16 @@ void Simulator::predictPositions() {
 
 void Simulator::projectLengthConstraints() {
   VertexSet& vertices = scene_.vertices;
-  const ProjectionResult result = work_.projection.project(vertices.position, vertices,
-                                                           scene_.edges, parameters_, work_.gram);
+  EdgeSet& edges = scene_.edges;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const double modulus = scene_.yarns[edges.yarn[e]].material.curve.youngsModulus();
+    work_.compliance[e] = edges.rest_length[e] / (modulus * edges.area[e]);
+  }
+  const ProjectionResult result = work_.projection.project(
+      vertices.position, vertices, edges, work_.compliance, parameters_, work_.gram);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    work_.constraint_tension[e] = work_.projection.constraintForce(e);
+  }
   health_.projection_iterations = result.iterations;
   health_.max_constraint_violation = result.max_violation;
   health_.projection_converged = result.converged;
@@ -129,6 +139,7 @@ void Simulator::estimateTensions() {
   input.force = &work_.force;
   input.time_step = parameters_.time_step;
   input.regularization = parameters_.regularization;
+  input.rows = parameters_.tension_rows;
   health_.tension_residual =
       work_.estimator.estimate(input, scene_.edges, work_.gram, work_.constraint_tension);
 
@@ -157,8 +168,7 @@ void Simulator::estimateTensions() {
 }
 
 void Simulator::updateMaterial() {
-  updateMaterialResponse(scene_.yarns, scene_.vertices.position, parameters_.time_step,
-                         parameters_.constraint_tolerance, scene_.edges);
+  updateMaterialResponse(scene_.yarns, parameters_.time_step, scene_.edges);
 }
 
 void Simulator::tear() {
@@ -166,7 +176,6 @@ void Simulator::tear() {
   if (!parameters_.breaking_enabled) return;
   const std::vector<std::uint32_t>& torn = work_.tearing.collect(scene_);
   health_.breaks = static_cast<int>(torn.size());
-  for (std::uint32_t e : torn) work_.constraint_tension[e] = 0.0;
   work_.tearing.apply(scene_, time_, pending_events_);
 }
 
@@ -181,6 +190,14 @@ void Simulator::setKinematicTarget(std::uint32_t vertex, const Eigen::Vector3d& 
   if (!target.allFinite()) throw std::invalid_argument("kinematic target must be finite");
   scene_.vertices.motion[vertex] = VertexMotion::kKinematic;
   scene_.vertices.kinematic_target[vertex] = target;
+}
+
+void Simulator::setVelocity(std::uint32_t vertex, const Eigen::Vector3d& velocity) {
+  requireVertex(scene_, vertex);
+  if (!velocity.allFinite()) throw std::invalid_argument("velocity must be finite");
+  if (scene_.vertices.motion[vertex] == VertexMotion::kFree) {
+    scene_.vertices.velocity[vertex] = velocity;
+  }
 }
 
 void Simulator::releaseVertex(std::uint32_t vertex) {

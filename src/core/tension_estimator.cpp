@@ -19,10 +19,12 @@ double TensionEstimator::estimate(const TensionEstimateInput& input, const EdgeS
       target_[v].setZero();
       continue;
     }
-    const double h = dt / vertices.mass[v];
-    weight_[v] = h * h;
-    target_[v] = vertices.velocity[v] - (*input.start_velocity)[v] - h * (*input.force)[v];
-    target_norm2 += target_[v].squaredNorm();
+    // Force-balance row of vertex v [N]: m (v'' - v) / dt - F = sum_e T_e u_ev.
+    target_[v] = (vertices.mass[v] / dt) * (vertices.velocity[v] - (*input.start_velocity)[v]) -
+                 (*input.force)[v];
+    const double scale = input.rows == TensionRowWeighting::kVelocity ? dt / vertices.mass[v] : 1.0;
+    weight_[v] = scale * scale;
+    target_norm2 += weight_[v] * target_[v].squaredNorm();
   }
   direction_.resize(q);
   active_.resize(q);
@@ -35,22 +37,26 @@ double TensionEstimator::estimate(const TensionEstimateInput& input, const EdgeS
     active_[e] = edges.intact(e) && length > 0.0;
     direction_[e] = active_[e] ? Eigen::Vector3d(d / length) : Eigen::Vector3d::Zero();
     // Right-hand side A^T b: a tension T pulls a along +n and b along -n.
-    const double ha = weight_[a] > 0.0 ? dt / vertices.mass[a] : 0.0;
-    const double hb = weight_[b] > 0.0 ? dt / vertices.mass[b] : 0.0;
-    tension[e] = direction_[e].dot(ha * target_[a] - hb * target_[b]);
+    tension[e] = direction_[e].dot(weight_[a] * target_[a] - weight_[b] * target_[b]);
   }
-  gram.solve(edges, direction_, weight_, active_, input.regularization, &anchor_, tension);
+  GramSystem system;
+  system.direction = &direction_;
+  system.vertex_weight = &weight_;
+  system.active = &active_;
+  system.regularization = input.regularization;
+  system.anchor = &anchor_;
+  gram.solve(edges, system, tension);
 
   // Residual A T - b, accumulated per vertex in target_ (which is no longer needed).
   for (std::size_t e = 0; e < q; ++e) {
     if (!active_[e]) continue;
     const std::uint32_t a = edges.vertex_a[e];
     const std::uint32_t b = edges.vertex_b[e];
-    if (weight_[a] > 0.0) target_[a] -= (dt / vertices.mass[a] * tension[e]) * direction_[e];
-    if (weight_[b] > 0.0) target_[b] += (dt / vertices.mass[b] * tension[e]) * direction_[e];
+    target_[a] -= tension[e] * direction_[e];
+    target_[b] += tension[e] * direction_[e];
   }
   double residual2 = 0.0;
-  for (std::size_t v = 0; v < n; ++v) residual2 += target_[v].squaredNorm();
+  for (std::size_t v = 0; v < n; ++v) residual2 += weight_[v] * target_[v].squaredNorm();
   return target_norm2 > 0.0 ? std::sqrt(residual2 / target_norm2) : 0.0;
 }
 

@@ -10,8 +10,18 @@
 
 namespace yarn_tearing {
 
+/// One edge-by-edge linear system: which edges take part and the matrix's ingredients.
+struct GramSystem {
+  const std::vector<Eigen::Vector3d>* direction = nullptr;  ///< unit edge directions n_e
+  const std::vector<double>* vertex_weight = nullptr;       ///< w_v per vertex
+  const std::vector<std::uint8_t>* active = nullptr;        ///< edges taking part
+  double regularization = 0.0;                              ///< lambda [-]
+  const std::vector<double>* anchor = nullptr;             ///< x_anchor, or null for 0
+  const std::vector<double>* diagonal_shift = nullptr;     ///< c_e added to G_ee, or null
+};
+
 /// Solves the edge-by-edge systems that both the constraint projection and the tension estimate
-/// need: (G + lambda diag(G)) x = r + lambda diag(G) x_anchor, with the Gram matrix
+/// need: (G + lambda diag(G) + diag(c)) x = r + lambda diag(G) x_anchor, with the Gram matrix
 ///   G_ef = sum_v w_v g_ev . g_fv,   g_ea = -n_e, g_eb = +n_e   (n_e the unit edge direction),
 /// restricted to the active edges. Inactive edges, and edges whose vertices all have weight 0,
 /// get x_e = 0. Works on any edge graph (sparse LDLT); when every edge joins consecutive vertices
@@ -25,27 +35,21 @@ class EdgeGramSolver {
   /// True when the O(N) banded path is used.
   bool usesBandedPath() const { return is_chain_ && !force_general_; }
 
-  /// Solves in place: `rhs` in, x out. `direction` is n_e per edge, `vertex_weight` w_v per
-  /// vertex, `active` selects edges; `anchor` (may be null) is x_anchor.
-  void solve(const EdgeSet& edges, const std::vector<Eigen::Vector3d>& direction,
-             const std::vector<double>& vertex_weight, const std::vector<std::uint8_t>& active,
-             double regularization, const std::vector<double>* anchor, std::vector<double>& rhs);
+  /// Solves in place: `rhs` in, x out.
+  void solve(const EdgeSet& edges, const GramSystem& system, std::vector<double>& rhs);
 
  private:
-  void solveBanded(const EdgeSet& edges, const std::vector<Eigen::Vector3d>& direction,
-                   const std::vector<double>& w, const std::vector<std::uint8_t>& active,
-                   double regularization, const std::vector<double>* anchor,
-                   std::vector<double>& rhs);
-  void solveGeneral(const EdgeSet& edges, const std::vector<Eigen::Vector3d>& direction,
-                    const std::vector<double>& w, const std::vector<std::uint8_t>& active,
-                    double regularization, const std::vector<double>* anchor,
-                    std::vector<double>& rhs);
+  /// Fills diagonal_ (G_ee + lambda G_ee + c_e, or 1 for left-out edges) and adds the anchor term.
+  void assembleDiagonal(const EdgeSet& edges, const GramSystem& system, std::vector<double>& rhs);
+  void solveBanded(const EdgeSet& edges, const GramSystem& system, std::vector<double>& rhs);
+  void solveGeneral(const EdgeSet& edges, const GramSystem& system, std::vector<double>& rhs);
 
   bool is_chain_ = false;
   bool force_general_ = false;
   std::vector<std::uint32_t> incidence_offset_;  ///< CSR offsets of vertex -> incident edges
   std::vector<std::uint32_t> incidence_edge_;    ///< CSR incident edges
-  std::vector<double> diagonal_;                 ///< banded: G_ee
+  std::vector<double> diagonal_;                 ///< assembled diagonal (1 for left-out edges)
+  std::vector<std::uint8_t> included_;           ///< active edges with a movable vertex
   std::vector<double> upper_;                    ///< banded: G_e,e+1
   std::vector<double> sweep_;                    ///< banded: Thomas elimination factors
   std::vector<Eigen::Triplet<double>> triplets_;

@@ -14,7 +14,7 @@ struct EdgeSet {
   std::vector<double> rest_length;             ///< plastic rest length L0 (1 + eps_p) [m]
   std::vector<double> area;                    ///< load-bearing cross-section [m^2]
   std::vector<double> strength_factor;         ///< breaking strain multiplier [-] (scatter)
-  std::vector<double> strain_limit;            ///< s: |x_a - x_b| <= rest_length (1 + s) [-]
+  std::vector<double> strain_limit;            ///< elastic strain / (1 + eps_p): the edge is held to |x_a - x_b| <= rest_length (1 + s) [-]
   std::vector<double> plastic_strain;          ///< eps_p, relative to L0 [-]
   std::vector<double> tension;                 ///< axial force, constraint + spring [N]
   std::vector<double> spring_tension;          ///< soft-spring part of the tension [N]

@@ -13,23 +13,39 @@ namespace yarn_tearing {
 
 /// Outcome of one projection.
 struct ProjectionResult {
-  int iterations = 0;            ///< Newton steps or Gauss–Seidel sweeps
-  double max_violation = 0.0;    ///< max (length - limit) / limit over intact edges [-]
-  bool converged = false;        ///< max_violation <= tolerance
+  int iterations = 0;          ///< Newton steps or Gauss–Seidel sweeps
+  double max_violation = 0.0;  ///< max (length - limit) / limit over intact edges [-]
+  bool converged = false;      ///< max_violation <= tolerance
 };
 
-/// Stage 3: limits every intact edge to |x_a - x_b| <= rest_length (1 + strain_limit), stretch
-/// only, by a mass-weighted projection of the predicted positions (Goldenthal et al. 2007).
-/// Edges whose vertices are all pinned or kinematic cannot be corrected and are not counted.
+/// Stage 3: limits every intact edge, stretch only, to
+///   |x_a - x_b| <= L (1 + s),   s = c T / L,
+/// with L the (plastic) rest length, c = L / (E A) the edge's elastic compliance [m/N] and T the
+/// force the constraint itself exerts (its multiplier / dt^2). The strain limit s is thus the
+/// elastic strain of the edge's current stress (paper §3.3), solved in the same Newton system
+/// rather than lagged by a step: the lagged update oscillates and grows once the yarn's own
+/// elastic vibration is resolved by the time step (omega dt < 1, e.g. a heavy weight), while this
+/// one is stable at any dt and mass ratio and reduces to the hard constraint when E A is large.
+/// The projection is mass-weighted (Goldenthal et al. 2007 fast projection): Newton steps on the
+/// active set with a banded (chains) or sparse solve. Edges whose vertices are all pinned or
+/// kinematic cannot be corrected and are not counted.
 class LengthConstraintProjection {
  public:
-  /// Projects `position` in place; masses and supports come from `vertices`.
+  /// Projects `position` in place. `compliance` is c per edge [m/N]; masses and supports come
+  /// from `vertices`.
   ProjectionResult project(std::vector<Eigen::Vector3d>& position, const VertexSet& vertices,
-                           const EdgeSet& edges, const SimulationParameters& parameters,
-                           EdgeGramSolver& gram);
+                           const EdgeSet& edges, const std::vector<double>& compliance,
+                           const SimulationParameters& parameters, EdgeGramSolver& gram);
+
+  /// Force each edge's constraint exerted in the last projection [N] (0 where inactive).
+  double constraintForce(std::size_t e) const { return multiplier_[e] / time_step2_; }
+  /// Strain limit s each edge was held to in the last projection [-].
+  double strainLimit(std::size_t e, const EdgeSet& edges) const {
+    return shift_[e] * multiplier_[e] / edges.rest_length[e];
+  }
 
  private:
-  /// Fills directions, violations and the active set; returns the max relative violation.
+  /// Fills directions, residuals and the active set; returns the max relative violation.
   double evaluate(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
   ProjectionResult projectFast(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
                                const SimulationParameters& parameters, EdgeGramSolver& gram);
@@ -37,12 +53,15 @@ class LengthConstraintProjection {
                                       const EdgeSet& edges,
                                       const SimulationParameters& parameters);
 
-  std::vector<double> inverse_mass_;            ///< [1/kg]
-  std::vector<Eigen::Vector3d> direction_;      ///< unit edge directions
-  std::vector<double> violation_;               ///< length - limit [m]
-  std::vector<double> multiplier_;              ///< accumulated Newton multipliers [kg*m]
-  std::vector<double> step_;                    ///< Newton step of the multipliers [kg*m]
-  std::vector<std::uint8_t> active_;            ///< edges in the active set
+  double time_step2_ = 1.0;                 ///< dt^2 [s^2]
+  std::vector<double> inverse_mass_;        ///< [1/kg]
+  std::vector<double> shift_;               ///< c / dt^2 per edge [1/kg]
+  std::vector<Eigen::Vector3d> direction_;  ///< unit edge directions
+  std::vector<double> residual_;            ///< length - L - c T [m]
+  std::vector<double> limit_;               ///< L + c T [m]
+  std::vector<double> multiplier_;          ///< accumulated multipliers T dt^2 [kg*m]
+  std::vector<double> step_;                ///< Newton step of the multipliers [kg*m]
+  std::vector<std::uint8_t> active_;        ///< edges in the active set
 };
 
 }  // namespace yarn_tearing

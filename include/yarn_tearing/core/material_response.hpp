@@ -17,11 +17,7 @@ namespace yarn_tearing {
 ///   the curve leaves at sigma; eta > 0: d(eps_p)/dt = E (eps_p* - eps_p)+ / eta, integrated
 ///   exactly over the step, so slow loading flows further than fast loading (§3.4).
 /// - strain = eps_p + sigma+ / E relative to L0; rest length L0 (1 + eps_p);
-///   strain limit s = (sigma+ / E) / (1 + eps_p), so the constraint length is L0 (1 + strain).
-/// - an edge the projection could not bring within its limit (held apart by supports, i.e.
-///   displacement control) carries at least the stress its geometric strain implies on the curve.
-void updateMaterialResponse(const std::vector<Yarn>& yarns,
-                            const std::vector<Eigen::Vector3d>& position, double time_step,
-                            double constraint_tolerance, EdgeSet& edges);
+///   the next projection holds the edge to the elastic strain of its stress (its strain limit).
+void updateMaterialResponse(const std::vector<Yarn>& yarns, double time_step, EdgeSet& edges);
 
 }  // namespace yarn_tearing

@@ -14,6 +14,17 @@ enum class ProjectionMethod {
   kGaussSeidel,
 };
 
+/// How the rows of the tension least squares (stage 4) are weighted.
+enum class TensionRowWeighting {
+  /// Each free vertex's row is its force balance [N]: m (v'' - v) / dt - F - sum_e T_e u_ev.
+  /// Every vertex counts alike whatever its mass, so a heavy weight on a light yarn still sets
+  /// the tension it hangs from.
+  kForceBalance,
+  /// The paper's rows, velocities [m/s]: the force rows times dt / m. At large mass ratios the
+  /// light vertices' rows outweigh the heavy ones' by (M/m)^2 and the estimate degrades.
+  kVelocity,
+};
+
 /// Parameters of the whole simulation, shared by all yarns.
 struct SimulationParameters {
   double time_step = 1.0e-3;  ///< physics step dt [s]
@@ -30,7 +41,10 @@ struct SimulationParameters {
   double constraint_tolerance = 1.0e-6;
   int max_projection_iterations = 50;   ///< Newton steps (or Gauss–Seidel sweeps) per step
   ProjectionMethod projection_method = ProjectionMethod::kFastProjection;
+  TensionRowWeighting tension_rows = TensionRowWeighting::kForceBalance;
   bool breaking_enabled = true;         ///< false: yarns never tear (yield still acts)
+  /// Use the general sparse solver even for chains (the banded O(N) path is otherwise chosen).
+  bool force_general_solver = false;
 
   /// Throws std::invalid_argument naming the parameter and the allowed range.
   void validate() const;

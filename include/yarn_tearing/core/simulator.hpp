@@ -30,6 +30,8 @@ class Simulator {
   void setAppliedForce(std::uint32_t vertex, const Eigen::Vector3d& force);
   /// Makes a vertex kinematic: from the next step it moves to `target` [m] (global id).
   void setKinematicTarget(std::uint32_t vertex, const Eigen::Vector3d& target);
+  /// Sets the velocity of a free vertex [m/s] (initial conditions; global id).
+  void setVelocity(std::uint32_t vertex, const Eigen::Vector3d& velocity);
   /// Frees a kinematic vertex (or restores the pin of an initially pinned one).
   void releaseVertex(std::uint32_t vertex);
 

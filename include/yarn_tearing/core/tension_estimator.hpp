@@ -6,6 +6,7 @@
 
 #include "yarn_tearing/core/edge_gram_solver.hpp"
 #include "yarn_tearing/core/edge_set.hpp"
+#include "yarn_tearing/core/simulation_parameters.hpp"
 #include "yarn_tearing/core/vertex_set.hpp"
 
 namespace yarn_tearing {
@@ -17,27 +18,33 @@ struct TensionEstimateInput {
   const std::vector<Eigen::Vector3d>* force = nullptr;       ///< non-constraint forces [N]
   double time_step = 0.0;                                    ///< dt [s]
   double regularization = 0.0;                               ///< lambda [-]
+  TensionRowWeighting rows = TensionRowWeighting::kForceBalance;  ///< row weighting
 };
 
 /// Stage 4 (paper §3.2): the tensions T_e [N] that stiff springs would have needed to carry the
 /// yarn from (x, v) to the length-constrained v'' in one step:
-///   min_T  sum_free v |v_v + dt/m_v (F_v + sum_e T_e u_ev) - v''_v|^2 + lambda sum_e D_e (T_e - T'_e)^2
+///   min_T  sum_free v s_v^2 |m_v (v''_v - v_v) / dt - F_v - sum_e T_e u_ev|^2
+///          + lambda sum_e D_e (T_e - T'_e)^2
+/// with s_v = 1 (force-balance rows, the default) or dt / m_v (the paper's velocity rows),
 /// u_ev the unit vector from v along edge e, D_e the diagonal of the normal matrix (so lambda is
-/// dimensionless: the same in any units and at any mass), T'_e the previous step's estimate (so a
-/// steady load is recovered without bias however long the yarn). Pinned and kinematic vertices'
-/// rows are left out. The normal equations are solved by EdgeGramSolver: O(N) for chains.
+/// dimensionless: the same in any units and at any mass) and T'_e the force the projection's own
+/// constraint exerted (LengthConstraintProjection::constraintForce). The paper regularizes toward
+/// 0; toward T'_e, the tensions the velocities do determine come out the same, and those they do
+/// not (a taut span between two supports moves no free vertex) take the constraint's force rather
+/// than 0. Pinned and kinematic vertices' rows are left out. The normal equations are solved by
+/// EdgeGramSolver: O(N) for chains.
 class TensionEstimator {
  public:
-  /// Overwrites `tension` (in: previous estimate, out: new one); returns |A T - b| / |b| [-].
+  /// Overwrites `tension` (in: the prior T'_e, out: the estimate); returns |A T - b| / |b| [-].
   double estimate(const TensionEstimateInput& input, const EdgeSet& edges, EdgeGramSolver& gram,
                   std::vector<double>& tension);
 
  private:
-  std::vector<double> weight_;                 ///< (dt/m_v)^2 for free vertices, else 0 [s^2/kg^2]
-  std::vector<Eigen::Vector3d> target_;        ///< b_v: velocity change the tensions explain [m/s]
+  std::vector<double> weight_;                 ///< s_v^2 for free vertices, else 0
+  std::vector<Eigen::Vector3d> target_;        ///< b_v: force the tensions must explain [N]
   std::vector<Eigen::Vector3d> direction_;     ///< unit edge directions
   std::vector<std::uint8_t> active_;           ///< intact edges
-  std::vector<double> anchor_;                 ///< previous estimate [N]
+  std::vector<double> anchor_;                 ///< prior T'_e [N]
 };
 
 }  // namespace yarn_tearing

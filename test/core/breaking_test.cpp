@@ -1,0 +1,162 @@
+// Breaking: a slowly rising force tears the yarn at sigma_b * pi r^2; 95 % of it never does.
+#include <gtest/gtest.h>
+
+#include "test_support.hpp"
+
+namespace yarn_tearing::test {
+namespace {
+
+/// Top pinned, no gravity, force along +x rising at `rate` [N/s] on the last vertex.
+struct RampedYarn {
+  RampedYarn(const Material& material, double rate) : RampedYarn(makeSpec(material), rate) {}
+  RampedYarn(const YarnSpec& yarn, double rate)
+      : spec(yarn), sim(parametersWithoutGravity(), {spec}), rate(rate) {}
+  static YarnSpec makeSpec(const Material& material) {
+    YarnSpec s = hangingYarn(material);
+    s.direction = Eigen::Vector3d(1.0, 0.0, 0.0);
+    return s;
+  }
+  /// Steps until the first break or `max_time` [s]; returns the events.
+  std::vector<BreakEvent> runUntilBreak(double max_time) {
+    const auto last = static_cast<std::uint32_t>(sim.scene().vertices.size() - 1);
+    while (sim.time() < max_time) {
+      sim.setAppliedForce(last, Eigen::Vector3d(rate * (sim.time() + sim.parameters().time_step),
+                                                0.0, 0.0));
+      sim.step();
+      std::vector<BreakEvent> events = sim.takeBreakEvents();
+      if (!events.empty()) return events;
+    }
+    return {};
+  }
+  YarnSpec spec;
+  Simulator sim;
+  double rate;
+};
+
+TEST(Breaking, SlowRampBreaksAtBreakingStressTimesArea) {
+  const Material material = cottonLike();
+  const double breaking_force = material.curve.breakingStress() * kPi * 1.0e-8;
+  RampedYarn ramp(material, breaking_force / 2.0);  // reaches it after 2 s
+  const std::vector<BreakEvent> events = ramp.runUntilBreak(4.0);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_NEAR(events[0].tension, breaking_force, 0.01 * breaking_force);
+  EXPECT_NEAR(events[0].time, 2.0, 0.02);
+  EXPECT_NEAR(events[0].strain, material.curve.breakingStrain(), 0.01 * 0.071);
+  EXPECT_EQ(events[0].vertex_b, events[0].vertex_a + 1);
+  EXPECT_EQ(events[0].edge, events[0].vertex_a);
+}
+
+TEST(Breaking, HeldAt95PercentForTenSecondsDoesNotBreak) {
+  const Material material = cottonLike();
+  const double force = 0.95 * material.curve.breakingStress() * kPi * 1.0e-8;
+  RampedYarn ramp(material, 0.0);
+  const auto last = static_cast<std::uint32_t>(ramp.sim.scene().vertices.size() - 1);
+  ramp.sim.setAppliedForce(last, Eigen::Vector3d(force, 0.0, 0.0));
+  std::size_t events = 0;
+  while (ramp.sim.time() < 10.0) {
+    ramp.sim.step();
+    events += ramp.sim.takeBreakEvents().size();
+  }
+  EXPECT_EQ(events, 0u);
+  EXPECT_NEAR(ramp.sim.scene().edges.tension[10], force, 0.005 * force);
+}
+
+TEST(Breaking, WeakerYarnBreaksFirstUnderTheSameForce) {
+  // The paper's Figure 4: lower modulus and breaking point tear earlier.
+  YarnSpec weak = RampedYarn::makeSpec(weakLike());
+  weak.name = "weak";
+  YarnSpec strong = RampedYarn::makeSpec(cottonLike());
+  strong.name = "strong";
+  strong.start = Eigen::Vector3d(0.0, 0.1, 0.0);
+  Simulator sim(parametersWithoutGravity(), {weak, strong});
+  const std::uint32_t weak_end = sim.scene().globalVertex(0, -1);
+  const std::uint32_t strong_end = sim.scene().globalVertex(1, -1);
+  const double rate = 5.0;  // [N/s]
+  std::vector<BreakEvent> all;
+  while (sim.time() < 5.0) {
+    const Eigen::Vector3d f(rate * (sim.time() + 1e-3), 0.0, 0.0);
+    sim.setAppliedForce(weak_end, f);
+    sim.setAppliedForce(strong_end, f);
+    sim.step();
+    for (const BreakEvent& e : sim.takeBreakEvents()) all.push_back(e);
+    if (all.size() >= 2) break;
+  }
+  ASSERT_GE(all.size(), 2u);
+  EXPECT_EQ(all[0].yarn, 0u);
+  EXPECT_EQ(all[1].yarn, 1u);
+  EXPECT_NEAR(all[0].tension, weakLike().curve.breakingStress() * kPi * 1e-8,
+              0.01 * all[0].tension);
+  EXPECT_NEAR(all[1].tension, cottonLike().curve.breakingStress() * kPi * 1e-8,
+              0.01 * all[1].tension);
+}
+
+TEST(Breaking, EachPieceTearsAtMostOnceAStep) {
+  // 1000 times the breaking force: the yarn shatters, but one edge per piece per step, cleanly.
+  const Material material = cottonLike();
+  const double force = 1000.0 * material.curve.breakingStress() * kPi * 1.0e-8;
+  RampedYarn ramp(material, 0.0);
+  const auto last = static_cast<std::uint32_t>(ramp.sim.scene().vertices.size() - 1);
+  ramp.sim.setAppliedForce(last, Eigen::Vector3d(force, 0.0, 0.0));
+  ramp.sim.step();
+  EXPECT_EQ(ramp.sim.takeBreakEvents().size(), 1u);
+  for (int i = 0; i < 200; ++i) {
+    ramp.sim.step();
+    ASSERT_TRUE(allFinite(ramp.sim)) << "step " << i;
+    EXPECT_LE(ramp.sim.lastHealth().max_constraint_violation, 1e-6) << "step " << i;
+  }
+}
+
+TEST(Breaking, LargeTimeStepStaysFiniteAndTearsCleanly) {
+  const Material material = cottonLike();
+  YarnSpec spec = hangingYarn(material);
+  spec.end_mass = 0.05;
+  SimulationParameters p;
+  p.time_step = 1.0 / 60.0;
+  Simulator sim(p, {spec});
+  const auto last = static_cast<std::uint32_t>(sim.scene().vertices.size() - 1);
+  std::size_t breaks = 0;
+  for (int i = 0; i < 600; ++i) {
+    sim.setAppliedForce(last, Eigen::Vector3d(0.0, 0.0, -2.0 * sim.time()));
+    sim.step();
+    breaks += sim.takeBreakEvents().size();
+    ASSERT_TRUE(allFinite(sim)) << "step " << i;
+    EXPECT_LE(sim.lastHealth().max_constraint_violation, 1e-6) << "step " << i;
+  }
+  EXPECT_GE(breaks, 1u);
+}
+
+TEST(Breaking, SameInputsGiveBitwiseSameOutputs) {
+  auto run = [] {
+    YarnSpec spec = RampedYarn::makeSpec(cottonLike());
+    spec.strength_scatter.weibull_modulus = 8.0;
+    spec.strength_scatter.seed = 42;
+    RampedYarn ramp(spec, 8.0);
+    return ramp.runUntilBreak(5.0);
+  };
+  const std::vector<BreakEvent> a = run();
+  const std::vector<BreakEvent> b = run();
+  ASSERT_EQ(a.size(), 1u);
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_EQ(a[0].edge, b[0].edge);
+  EXPECT_EQ(a[0].time, b[0].time);
+  EXPECT_EQ(a[0].tension, b[0].tension);
+  EXPECT_EQ(a[0].position, b[0].position);
+}
+
+TEST(Breaking, StrengthScatterChoosesTheWeakestEdge) {
+  YarnSpec spec = RampedYarn::makeSpec(cottonLike());
+  spec.strength_scatter.weibull_modulus = 8.0;
+  spec.strength_scatter.seed = 7;
+  RampedYarn ramp(spec, 8.0);
+  const EdgeSet& edges = ramp.sim.scene().edges;
+  std::size_t weakest = 0;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (edges.strength_factor[e] < edges.strength_factor[weakest]) weakest = e;
+  }
+  const std::vector<BreakEvent> events = ramp.runUntilBreak(5.0);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].edge, weakest);
+}
+
+}  // namespace
+}  // namespace yarn_tearing::test

@@ -1,0 +1,82 @@
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "yarn_tearing/core/simulator.hpp"
+
+namespace yarn_tearing::test {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kGravity = 9.81;  ///< [m/s^2]
+
+/// Cotton-like fibre: E = 7.6 GPa, yield at 1.5 % / 114 MPa, break at 7.1 % / 486 MPa.
+inline Material cottonLike() {
+  Material m;
+  m.name = "cotton_like";
+  m.density = 1520.0;
+  m.curve = StressStrainCurve({{0.0, 0.0}, {0.015, 1.14e8}, {0.071, 4.86e8}});
+  return m;
+}
+
+/// A weaker fibre (lower modulus and breaking point), as the left yarn of the paper's Figure 4.
+inline Material weakLike() {
+  Material m;
+  m.name = "weak_like";
+  m.density = 1520.0;
+  m.curve = StressStrainCurve({{0.0, 0.0}, {0.01, 4.0e7}, {0.05, 1.6e8}});
+  return m;
+}
+
+/// 0.3 m, 25 vertices, r = 0.1 mm, hanging along -z from the origin, vertex 0 pinned.
+inline YarnSpec hangingYarn(const Material& material = cottonLike()) {
+  YarnSpec spec;
+  spec.name = "yarn";
+  spec.material = material;
+  spec.radius = 1.0e-4;
+  spec.length = 0.3;
+  spec.num_vertices = 25;
+  spec.pinned = {0};
+  return spec;
+}
+
+inline SimulationParameters parametersWithoutGravity(double dt = 1.0e-3) {
+  SimulationParameters p;
+  p.time_step = dt;
+  p.gravity.setZero();
+  return p;
+}
+
+/// Sum of the intact edge lengths of yarn 0 [m].
+inline double yarnLength(const Simulator& sim) {
+  const Scene& s = sim.scene();
+  double length = 0.0;
+  for (std::size_t e = 0; e < s.edges.size(); ++e) {
+    if (!s.edges.intact(e)) continue;
+    length += (s.vertices.position[s.edges.vertex_b[e]] - s.vertices.position[s.edges.vertex_a[e]])
+                  .norm();
+  }
+  return length;
+}
+
+inline bool allFinite(const Simulator& sim) {
+  for (const auto& x : sim.scene().vertices.position) {
+    if (!x.allFinite()) return false;
+  }
+  for (const auto& v : sim.scene().vertices.velocity) {
+    if (!v.allFinite()) return false;
+  }
+  for (double t : sim.scene().edges.tension) {
+    if (!std::isfinite(t)) return false;
+  }
+  return true;
+}
+
+inline Eigen::Vector3d momentum(const Simulator& sim) {
+  const VertexSet& v = sim.scene().vertices;
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < v.size(); ++i) p += v.mass[i] * v.velocity[i];
+  return p;
+}
+
+}  // namespace yarn_tearing::test
