@@ -70,8 +70,8 @@ void EdgeGramSolver::solveBanded(const EdgeSet& edges, const GramSystem& system,
   const std::vector<Eigen::Vector3d>& n = *system.direction;
   const std::size_t q = edges.size();
   for (std::size_t e = 0; e < q; ++e) {
-    const bool coupled = e + 1 < q && included_[e] && included_[e + 1] &&
-                         edges.vertex_b[e] == edges.vertex_a[e + 1];
+    const bool coupled =
+        e + 1 < q && included_[e] && included_[e + 1] && edges.vertex_b[e] == edges.vertex_a[e + 1];
     upper_[e] = coupled ? -w[edges.vertex_b[e]] * n[e].dot(n[e + 1]) : 0.0;
   }
   // Thomas algorithm (the matrix is symmetric positive definite, no pivoting needed).

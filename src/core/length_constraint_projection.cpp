@@ -71,13 +71,15 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
     gram.solve(edges, system, step_);
     for (std::size_t e = 0; e < edges.size(); ++e) {
       if (!active_[e]) continue;
-      // Projected Newton: the accumulated multiplier may not turn compressive.
-      const double dl = std::max(step_[e], -multiplier_[e]);
-      multiplier_[e] += dl;
+      const double dl = step_[e];
       const std::uint32_t a = edges.vertex_a[e];
       const std::uint32_t b = edges.vertex_b[e];
       position[a] += (inverse_mass_[a] * dl) * direction_[e];
       position[b] -= (inverse_mass_[b] * dl) * direction_[e];
+      // The full Newton step moves the vertices (clamping it would break the balance between
+      // redundant constraints); an edge whose force would turn compressive is released instead:
+      // it holds no force and leaves the active set unless stretched again.
+      multiplier_[e] = std::max(multiplier_[e] + dl, 0.0);
     }
     ++result.iterations;
   }

@@ -57,8 +57,8 @@ std::uint32_t Scene::globalVertex(std::size_t yarn, int local) const {
   const int index = local < 0 ? n + local : local;
   if (index < 0 || index >= n) {
     throw std::out_of_range("vertex " + std::to_string(local) + " of yarn '" + yarns[yarn].name +
-                            "' out of range [" + std::to_string(-n) + ", " +
-                            std::to_string(n - 1) + "]");
+                            "' out of range [" + std::to_string(-n) + ", " + std::to_string(n - 1) +
+                            "]");
   }
   return yarns[yarn].first_vertex + static_cast<std::uint32_t>(index);
 }

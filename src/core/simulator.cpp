@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "yarn_tearing/core/material_response.hpp"
 
@@ -27,11 +28,40 @@ void requireVertex(const Scene& scene, std::uint32_t vertex) {
   }
 }
 
+void validateScene(const Scene& scene) {
+  const VertexSet& v = scene.vertices;
+  const EdgeSet& e = scene.edges;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (!(v.mass[i] > 0.0) || !v.position[i].allFinite() || v.yarn[i] >= scene.yarns.size()) {
+      throw std::invalid_argument("scene vertex " + std::to_string(i) +
+                                  " needs a mass > 0, a finite position and an existing yarn");
+    }
+  }
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    const bool ok = e.vertex_a[i] < v.size() && e.vertex_b[i] < v.size() &&
+                    e.vertex_a[i] != e.vertex_b[i] && e.yarn[i] < scene.yarns.size() &&
+                    e.original_rest_length[i] > 0.0 && e.area[i] > 0.0 &&
+                    e.strength_factor[i] > 0.0;
+    if (!ok) {
+      throw std::invalid_argument("scene edge " + std::to_string(i) +
+                                  " needs two distinct existing vertices, an existing yarn and a "
+                                  "rest length, area and strength factor > 0");
+    }
+  }
+}
+
 }  // namespace
 
 Simulator::Simulator(const SimulationParameters& parameters, const std::vector<YarnSpec>& yarns)
     : parameters_(parameters), initial_scene_(buildScene(yarns)) {
   parameters_.validate();
+  reset();
+}
+
+Simulator::Simulator(const SimulationParameters& parameters, Scene scene)
+    : parameters_(parameters), initial_scene_(std::move(scene)) {
+  parameters_.validate();
+  validateScene(initial_scene_);
   reset();
 }
 
@@ -60,7 +90,7 @@ void Simulator::step() {
   updateMaterial();            // 5
   time_ += parameters_.time_step;
   ++step_count_;
-  tear();                      // 6
+  tear();  // 6
 }
 
 void Simulator::accumulateForces() {
@@ -150,8 +180,8 @@ void Simulator::estimateTensions() {
   for (std::size_t v = 0; v < vertices.size(); ++v) {
     support_force_[v].setZero();
     if (!vertices.isSupport(v)) continue;
-    support_force_[v] = work_.force[v] - vertices.mass[v] / dt *
-                                              (vertices.velocity[v] - work_.start_velocity[v]);
+    support_force_[v] =
+        work_.force[v] - vertices.mass[v] / dt * (vertices.velocity[v] - work_.start_velocity[v]);
   }
   for (std::size_t e = 0; e < edges.size(); ++e) {
     if (!edges.intact(e)) continue;

@@ -42,8 +42,9 @@ StressStrainCurve::StressStrainCurve(std::vector<CurvePoint> points) : points_(s
   for (std::size_t i = 1; i < points_.size(); ++i) {
     if (!(points_[i].strain > points_[i - 1].strain) ||
         !(points_[i].stress > points_[i - 1].stress)) {
-      throw std::invalid_argument("stress_strain must be strictly increasing in strain and stress: " +
-                                  describe(points_[i - 1]) + " then " + describe(points_[i]));
+      throw std::invalid_argument(
+          "stress_strain must be strictly increasing in strain and stress: " +
+          describe(points_[i - 1]) + " then " + describe(points_[i]));
     }
   }
   youngs_modulus_ = points_[1].stress / points_[1].strain;

@@ -63,8 +63,8 @@ void Tearing::apply(Scene& scene, double time, std::vector<BreakEvent>& events) 
     event.edge = e - yarn.first_edge;
     event.vertex_a = edges.vertex_a[e] - yarn.first_vertex;
     event.vertex_b = edges.vertex_b[e] - yarn.first_vertex;
-    event.position =
-        0.5 * (scene.vertices.position[edges.vertex_a[e]] + scene.vertices.position[edges.vertex_b[e]]);
+    event.position = 0.5 * (scene.vertices.position[edges.vertex_a[e]] +
+                            scene.vertices.position[edges.vertex_b[e]]);
     event.time = time;
     event.tension = edges.tension[e];
     event.stress = edges.stress[e];

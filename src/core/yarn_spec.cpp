@@ -45,8 +45,9 @@ void YarnSpec::validate() const {
   }
   require(std::isfinite(end_mass) && end_mass >= 0.0, name,
           "end_mass must be >= 0 [kg], got " + std::to_string(end_mass));
-  require(std::isfinite(strength_scatter.weibull_modulus) && strength_scatter.weibull_modulus >= 0.0,
-          name, "weibull_modulus must be >= 0 (0 = no scatter)");
+  require(
+      std::isfinite(strength_scatter.weibull_modulus) && strength_scatter.weibull_modulus >= 0.0,
+      name, "weibull_modulus must be >= 0 (0 = no scatter)");
 }
 
 double YarnSpec::area() const {

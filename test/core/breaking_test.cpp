@@ -20,8 +20,8 @@ struct RampedYarn {
   std::vector<BreakEvent> runUntilBreak(double max_time) {
     const auto last = static_cast<std::uint32_t>(sim.scene().vertices.size() - 1);
     while (sim.time() < max_time) {
-      sim.setAppliedForce(last, Eigen::Vector3d(rate * (sim.time() + sim.parameters().time_step),
-                                                0.0, 0.0));
+      sim.setAppliedForce(
+          last, Eigen::Vector3d(rate * (sim.time() + sim.parameters().time_step), 0.0, 0.0));
       sim.step();
       std::vector<BreakEvent> events = sim.takeBreakEvents();
       if (!events.empty()) return events;

@@ -8,16 +8,14 @@ namespace {
 
 /// Vertex 0 pinned, no gravity, force along +x on the last vertex.
 struct LoadedYarn {
-  explicit LoadedYarn(const Material& material) : spec(makeSpec(material)),
-                                                  sim(parametersWithoutGravity(), {spec}) {}
+  explicit LoadedYarn(const Material& material)
+      : spec(makeSpec(material)), sim(parametersWithoutGravity(), {spec}) {}
   static YarnSpec makeSpec(const Material& material) {
     YarnSpec s = hangingYarn(material);
     s.direction = Eigen::Vector3d(1.0, 0.0, 0.0);
     return s;
   }
-  std::uint32_t end() const {
-    return static_cast<std::uint32_t>(sim.scene().vertices.size() - 1);
-  }
+  std::uint32_t end() const { return static_cast<std::uint32_t>(sim.scene().vertices.size() - 1); }
   /// Ramps the end force linearly from its current value to `force` [N] over `duration` [s].
   void rampTo(double force, double duration) {
     const double from = sim.scene().vertices.applied_force[end()].x();
@@ -40,8 +38,8 @@ TEST(Plasticity, LoadedPastYieldAndUnloadedKeepsThePermanentElongation) {
   const double area = kPi * 1.0e-8;
   const double peak_stress = 0.5 * (material.curve.yieldStress() + material.curve.breakingStress());
   // Closed form: eps_p = eps(sigma) - sigma / E on the piecewise-linear curve.
-  const double expected_plastic = material.curve.strainAtStress(peak_stress) -
-                                  peak_stress / material.curve.youngsModulus();
+  const double expected_plastic =
+      material.curve.strainAtStress(peak_stress) - peak_stress / material.curve.youngsModulus();
   ASSERT_GT(expected_plastic, 0.003);
   const double residual_force = 0.001 * material.curve.yieldStress() * area;  // keeps it straight
   LoadedYarn yarn(material);

@@ -16,8 +16,8 @@ struct GramSystem {
   const std::vector<double>* vertex_weight = nullptr;       ///< w_v per vertex
   const std::vector<std::uint8_t>* active = nullptr;        ///< edges taking part
   double regularization = 0.0;                              ///< lambda [-]
-  const std::vector<double>* anchor = nullptr;             ///< x_anchor, or null for 0
-  const std::vector<double>* diagonal_shift = nullptr;     ///< c_e added to G_ee, or null
+  const std::vector<double>* anchor = nullptr;              ///< x_anchor, or null for 0
+  const std::vector<double>* diagonal_shift = nullptr;      ///< c_e added to G_ee, or null
 };
 
 /// Solves the edge-by-edge systems that both the constraint projection and the tension estimate

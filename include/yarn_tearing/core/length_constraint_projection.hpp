@@ -49,8 +49,7 @@ class LengthConstraintProjection {
   double evaluate(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
   ProjectionResult projectFast(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
                                const SimulationParameters& parameters, EdgeGramSolver& gram);
-  ProjectionResult projectGaussSeidel(std::vector<Eigen::Vector3d>& position,
-                                      const EdgeSet& edges,
+  ProjectionResult projectGaussSeidel(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
                                       const SimulationParameters& parameters);
 
   double time_step2_ = 1.0;                 ///< dt^2 [s^2]

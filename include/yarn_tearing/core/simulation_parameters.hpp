@@ -27,7 +27,7 @@ enum class TensionRowWeighting {
 
 /// Parameters of the whole simulation, shared by all yarns.
 struct SimulationParameters {
-  double time_step = 1.0e-3;  ///< physics step dt [s]
+  double time_step = 1.0e-3;                                   ///< physics step dt [s]
   Eigen::Vector3d gravity = Eigen::Vector3d(0.0, 0.0, -9.81);  ///< [m/s^2]
   /// Linear air damping c [N*s/m^2]: each vertex feels -c * (its share of yarn length) * velocity.
   double air_damping = 0.0;
@@ -39,10 +39,10 @@ struct SimulationParameters {
   double regularization = 1.0e-6;
   /// Largest relative violation (|x_i - x_j| - limit) / limit accepted by the projection [-].
   double constraint_tolerance = 1.0e-6;
-  int max_projection_iterations = 50;   ///< Newton steps (or Gauss–Seidel sweeps) per step
+  int max_projection_iterations = 50;  ///< Newton steps (or Gauss–Seidel sweeps) per step
   ProjectionMethod projection_method = ProjectionMethod::kFastProjection;
   TensionRowWeighting tension_rows = TensionRowWeighting::kForceBalance;
-  bool breaking_enabled = true;         ///< false: yarns never tear (yield still acts)
+  bool breaking_enabled = true;  ///< false: yarns never tear (yield still acts)
   /// Use the general sparse solver even for chains (the banded O(N) path is otherwise chosen).
   bool force_general_solver = false;
 

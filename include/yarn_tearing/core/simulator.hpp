@@ -17,10 +17,15 @@ class Simulator {
  public:
   /// Throws std::invalid_argument (naming the parameter) on invalid parameters or yarn specs.
   Simulator(const SimulationParameters& parameters, const std::vector<YarnSpec>& yarns);
+  /// Simulates a ready-made scene: any edge graph (a woven patch, a knot), not only straight
+  /// yarns. Throws std::invalid_argument when an edge names a missing vertex or yarn, or a mass,
+  /// length or area is not positive.
+  Simulator(const SimulationParameters& parameters, Scene scene);
 
   /// Advances the simulation by parameters().time_step. The stages, in order:
   /// 1 accumulate forces, 2 predict (symplectic Euler), 3 project length constraints,
-  /// 4 estimate tensions, 5 update material (strain limit, yield), 6 tear (collected, then applied).
+  /// 4 estimate tensions, 5 update material (strain limit, yield), 6 tear (collected, then
+  /// applied).
   void step();
 
   /// Back to the initial scene and time 0; applied forces, grasps and pending events cleared.
@@ -44,7 +49,7 @@ class Simulator {
   const Scene& scene() const { return scene_; }
   const SimulationParameters& parameters() const { return parameters_; }
   const StepHealth& lastHealth() const { return health_; }
-  double time() const { return time_; }                 ///< simulated time [s]
+  double time() const { return time_; }  ///< simulated time [s]
   std::uint64_t stepCount() const { return step_count_; }
 
  private:

@@ -13,15 +13,15 @@ namespace yarn_tearing {
 /// The stage objects and scratch arrays that every step reuses, so a step does not allocate
 /// after the first one.
 struct StepWorkspace {
-  std::vector<Eigen::Vector3d> force;              ///< non-constraint force per vertex [N]
-  std::vector<Eigen::Vector3d> start_position;     ///< x at the start of the step [m]
-  std::vector<Eigen::Vector3d> start_velocity;     ///< v at the start of the step [m/s]
-  std::vector<double> compliance;                  ///< elastic compliance L / (E A) [m/N]
-  std::vector<double> constraint_tension;          ///< constraint part of the tension [N]
-  EdgeGramSolver gram;                             ///< J W J^T solver shared by stages 3 and 4
-  LengthConstraintProjection projection;           ///< stage 3
-  TensionEstimator estimator;                      ///< stage 4
-  Tearing tearing;                                 ///< stage 6
+  std::vector<Eigen::Vector3d> force;           ///< non-constraint force per vertex [N]
+  std::vector<Eigen::Vector3d> start_position;  ///< x at the start of the step [m]
+  std::vector<Eigen::Vector3d> start_velocity;  ///< v at the start of the step [m/s]
+  std::vector<double> compliance;               ///< elastic compliance L / (E A) [m/N]
+  std::vector<double> constraint_tension;       ///< constraint part of the tension [N]
+  EdgeGramSolver gram;                          ///< J W J^T solver shared by stages 3 and 4
+  LengthConstraintProjection projection;        ///< stage 3
+  TensionEstimator estimator;                   ///< stage 4
+  Tearing tearing;                              ///< stage 6
 };
 
 }  // namespace yarn_tearing

@@ -17,10 +17,12 @@ class StiffReferenceYarn {
   StiffReferenceYarn(const YarnSpec& spec, const Eigen::Vector3d& gravity,
                      double stability_fraction = 0.2);
 
+  /// Changes the gravity [m/s^2] from now on.
+  void setGravity(const Eigen::Vector3d& gravity) { gravity_ = gravity; }
   /// Advances by `duration` [s] in internal steps (the last one shortened to land on it).
   void advance(double duration);
 
-  const std::vector<Eigen::Vector3d>& positions() const { return position_; }  ///< [m]
+  const std::vector<Eigen::Vector3d>& positions() const { return position_; }   ///< [m]
   const std::vector<Eigen::Vector3d>& velocities() const { return velocity_; }  ///< [m/s]
   /// Spring tension of edge e [N] at the current positions (>= 0).
   double tension(std::size_t e) const;

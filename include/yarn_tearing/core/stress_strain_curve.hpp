@@ -18,8 +18,8 @@ struct CurvePoint {
 /// that a stress leaves behind is strainAtStress(stress) - stress / E.
 class StressStrainCurve {
  public:
-  /// Throws std::invalid_argument naming the problem unless: at least 3 points, the first is (0, 0),
-  /// strains and stresses strictly increasing, all finite.
+  /// Throws std::invalid_argument naming the problem unless: at least 3 points, the first is (0,
+  /// 0), strains and stresses strictly increasing, all finite.
   explicit StressStrainCurve(std::vector<CurvePoint> points);
 
   const std::vector<CurvePoint>& points() const { return points_; }

@@ -13,11 +13,11 @@ namespace yarn_tearing {
 
 /// What the tension estimate needs from the step that produced it.
 struct TensionEstimateInput {
-  const VertexSet* vertices = nullptr;                       ///< after projection (x'', v'')
-  const std::vector<Eigen::Vector3d>* start_velocity = nullptr;  ///< v at step start [m/s]
-  const std::vector<Eigen::Vector3d>* force = nullptr;       ///< non-constraint forces [N]
-  double time_step = 0.0;                                    ///< dt [s]
-  double regularization = 0.0;                               ///< lambda [-]
+  const VertexSet* vertices = nullptr;                            ///< after projection (x'', v'')
+  const std::vector<Eigen::Vector3d>* start_velocity = nullptr;   ///< v at step start [m/s]
+  const std::vector<Eigen::Vector3d>* force = nullptr;            ///< non-constraint forces [N]
+  double time_step = 0.0;                                         ///< dt [s]
+  double regularization = 0.0;                                    ///< lambda [-]
   TensionRowWeighting rows = TensionRowWeighting::kForceBalance;  ///< row weighting
 };
 
@@ -40,11 +40,11 @@ class TensionEstimator {
                   std::vector<double>& tension);
 
  private:
-  std::vector<double> weight_;                 ///< s_v^2 for free vertices, else 0
-  std::vector<Eigen::Vector3d> target_;        ///< b_v: force the tensions must explain [N]
-  std::vector<Eigen::Vector3d> direction_;     ///< unit edge directions
-  std::vector<std::uint8_t> active_;           ///< intact edges
-  std::vector<double> anchor_;                 ///< prior T'_e [N]
+  std::vector<double> weight_;              ///< s_v^2 for free vertices, else 0
+  std::vector<Eigen::Vector3d> target_;     ///< b_v: force the tensions must explain [N]
+  std::vector<Eigen::Vector3d> direction_;  ///< unit edge directions
+  std::vector<std::uint8_t> active_;        ///< intact edges
+  std::vector<double> anchor_;              ///< prior T'_e [N]
 };
 
 }  // namespace yarn_tearing

@@ -15,14 +15,14 @@ enum class VertexMotion : std::uint8_t {
 
 /// All vertices of a scene, structure-of-arrays; index = global vertex id.
 struct VertexSet {
-  std::vector<Eigen::Vector3d> position;        ///< [m]
-  std::vector<Eigen::Vector3d> velocity;        ///< [m/s]
-  std::vector<double> mass;                     ///< [kg]
-  std::vector<double> damping_length;           ///< share of yarn length for air damping [m]
-  std::vector<VertexMotion> motion;             ///< free, pinned or kinematic
-  std::vector<Eigen::Vector3d> applied_force;   ///< external force set from outside [N]
+  std::vector<Eigen::Vector3d> position;          ///< [m]
+  std::vector<Eigen::Vector3d> velocity;          ///< [m/s]
+  std::vector<double> mass;                       ///< [kg]
+  std::vector<double> damping_length;             ///< share of yarn length for air damping [m]
+  std::vector<VertexMotion> motion;               ///< free, pinned or kinematic
+  std::vector<Eigen::Vector3d> applied_force;     ///< external force set from outside [N]
   std::vector<Eigen::Vector3d> kinematic_target;  ///< target of kinematic vertices [m]
-  std::vector<std::uint32_t> yarn;              ///< index of the owning yarn
+  std::vector<std::uint32_t> yarn;                ///< index of the owning yarn
 
   std::size_t size() const { return position.size(); }
   bool isSupport(std::size_t v) const { return motion[v] != VertexMotion::kFree; }

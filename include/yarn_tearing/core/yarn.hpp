@@ -11,10 +11,10 @@ namespace yarn_tearing {
 struct Yarn {
   std::string name;
   Material material;
-  double radius = 0.0;              ///< radius used for drawing and reporting [m]
-  std::uint32_t first_vertex = 0;   ///< global id of the yarn's vertex 0
+  double radius = 0.0;             ///< radius used for drawing and reporting [m]
+  std::uint32_t first_vertex = 0;  ///< global id of the yarn's vertex 0
   std::uint32_t num_vertices = 0;
-  std::uint32_t first_edge = 0;     ///< global id of the yarn's edge 0
+  std::uint32_t first_edge = 0;  ///< global id of the yarn's edge 0
   std::uint32_t num_edges = 0;
 };
 

@@ -18,21 +18,21 @@ struct StrengthScatter {
 
 /// Everything needed to build one straight yarn.
 struct YarnSpec {
-  std::string name;                               ///< unique name
-  Material material;                              ///< fibre material
+  std::string name;   ///< unique name
+  Material material;  ///< fibre material
   /// Yarn radius r [m]. The load-bearing area is pi r^2 (paper §3.2) unless `tex` > 0.
   double radius = 1.0e-4;
   /// Linear density [tex = g/km]; > 0 sizes the yarn by mass instead of by radius: the
   /// load-bearing (fibre) area is tex*1e-6/density and the radius is sqrt(area/(pi*packing)).
   double tex = 0.0;
-  double packing_fraction = 0.6;                  ///< fibre volume fraction of the yarn [-]
-  double length = 0.3;                            ///< total length [m]
-  int num_vertices = 25;                          ///< N >= 2 vertices, N - 1 edges
-  Eigen::Vector3d start = Eigen::Vector3d::Zero();               ///< first vertex [m]
-  Eigen::Vector3d direction = Eigen::Vector3d(0.0, 0.0, -1.0);   ///< unit-less, normalized
-  std::vector<int> pinned;                        ///< pinned vertices; negative counts from end
-  double end_mass = 0.0;                          ///< extra point mass on the last vertex [kg]
-  StrengthScatter strength_scatter;               ///< optional breaking-strain scatter
+  double packing_fraction = 0.6;                    ///< fibre volume fraction of the yarn [-]
+  double length = 0.3;                              ///< total length [m]
+  int num_vertices = 25;                            ///< N >= 2 vertices, N - 1 edges
+  Eigen::Vector3d start = Eigen::Vector3d::Zero();  ///< first vertex [m]
+  Eigen::Vector3d direction = Eigen::Vector3d(0.0, 0.0, -1.0);  ///< unit-less, normalized
+  std::vector<int> pinned;           ///< pinned vertices; negative counts from end
+  double end_mass = 0.0;             ///< extra point mass on the last vertex [kg]
+  StrengthScatter strength_scatter;  ///< optional breaking-strain scatter
 
   /// Throws std::invalid_argument naming the field and what is allowed.
   void validate() const;
