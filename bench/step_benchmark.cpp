@@ -1,2 +1,108 @@
+// One full step, and each stage on its own, for hanging yarns of 25 to 10,000 vertices.
+// Run: build/yarn_tearing_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
+
+#include "yarn_tearing/core/length_constraint_projection.hpp"
+#include "yarn_tearing/core/material_response.hpp"
+#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/core/tearing.hpp"
+#include "yarn_tearing/core/tension_estimator.hpp"
+
+namespace yarn_tearing {
+namespace {
+
+/// A cotton yarn with 12.5 mm segments and a 10 g weight, hanging and settled for 0.2 s.
+Simulator settledYarn(int vertices) {
+  YarnSpec spec;
+  spec.name = "bench";
+  spec.material.curve = StressStrainCurve({{0.0, 0.0}, {0.015, 1.14e8}, {0.071, 4.86e8}});
+  spec.num_vertices = vertices;
+  spec.length = 0.0125 * (vertices - 1);
+  spec.pinned = {0};
+  spec.end_mass = 0.01;
+  Simulator sim(SimulationParameters{}, {spec});
+  for (int i = 0; i < 200; ++i) sim.step();
+  return sim;
+}
+
+void BM_Step(benchmark::State& state) {
+  Simulator sim = settledYarn(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    sim.step();
+    benchmark::ClobberMemory();
+  }
+  state.SetComplexityN(state.range(0));
+  state.counters["iterations/step"] = sim.lastHealth().projection_iterations;
+}
+
+/// Stage 3 from the same predicted positions each time (includes copying them, O(N)).
+void BM_StageProjection(benchmark::State& state) {
+  Simulator sim = settledYarn(static_cast<int>(state.range(0)));
+  const Scene& scene = sim.scene();
+  std::vector<Eigen::Vector3d> predicted = scene.vertices.position;
+  for (std::size_t v = 1; v < predicted.size(); ++v) predicted[v].z() -= 9.81e-6;  // g dt^2
+  std::vector<double> compliance(scene.edges.size());
+  for (std::size_t e = 0; e < compliance.size(); ++e) {
+    compliance[e] = scene.edges.rest_length[e] /
+                    (scene.yarns[0].material.curve.youngsModulus() * scene.edges.area[e]);
+  }
+  LengthConstraintProjection projection;
+  EdgeGramSolver gram;
+  gram.setTopology(scene.edges, scene.vertices.size());
+  std::vector<Eigen::Vector3d> position;
+  for (auto _ : state) {
+    position = predicted;
+    benchmark::DoNotOptimize(projection.project(position, scene.vertices, scene.edges, compliance,
+                                                sim.parameters(), gram));
+  }
+  state.SetComplexityN(state.range(0));
+}
+
+/// Stage 4 on the settled state.
+void BM_StageTensionEstimate(benchmark::State& state) {
+  Simulator sim = settledYarn(static_cast<int>(state.range(0)));
+  const Scene& scene = sim.scene();
+  std::vector<Eigen::Vector3d> force(scene.vertices.size());
+  for (std::size_t v = 0; v < force.size(); ++v) {
+    force[v] = scene.vertices.mass[v] * sim.parameters().gravity;
+  }
+  const std::vector<Eigen::Vector3d> start_velocity = scene.vertices.velocity;
+  TensionEstimateInput input;
+  input.vertices = &scene.vertices;
+  input.start_velocity = &start_velocity;
+  input.force = &force;
+  input.time_step = sim.parameters().time_step;
+  input.regularization = sim.parameters().regularization;
+  TensionEstimator estimator;
+  EdgeGramSolver gram;
+  gram.setTopology(scene.edges, scene.vertices.size());
+  std::vector<double> tension = scene.edges.tension;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(estimator.estimate(input, scene.edges, gram, tension));
+  }
+  state.SetComplexityN(state.range(0));
+}
+
+/// Stages 5 and 6 (material update, then the search for edges to tear) on the settled state.
+void BM_StageMaterialAndTearing(benchmark::State& state) {
+  Simulator sim = settledYarn(static_cast<int>(state.range(0)));
+  Scene scene = sim.scene();
+  Tearing tearing;
+  for (auto _ : state) {
+    updateMaterialResponse(scene.yarns, sim.parameters().time_step, scene.edges);
+    benchmark::DoNotOptimize(tearing.collect(scene).size());
+  }
+  state.SetComplexityN(state.range(0));
+}
+
+#define YARN_SIZES Arg(25)->Arg(100)->Arg(1000)->Arg(10000)->Complexity(benchmark::oN)
+
+BENCHMARK(BM_Step)->YARN_SIZES->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StageProjection)->YARN_SIZES->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StageTensionEstimate)->YARN_SIZES->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StageMaterialAndTearing)->YARN_SIZES->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace yarn_tearing
+
 BENCHMARK_MAIN();

@@ -108,9 +108,9 @@ void EdgeGramSolver::solveGeneral(const EdgeSet& edges, const GramSystem& system
   }
   matrix_.resize(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q));
   matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
-  ldlt_.compute(matrix_);
+  factorization_.ldlt.compute(matrix_);
   Eigen::Map<Eigen::VectorXd> b(rhs.data(), static_cast<Eigen::Index>(q));
-  const Eigen::VectorXd x = ldlt_.solve(b);
+  const Eigen::VectorXd x = factorization_.ldlt.solve(b);
   b = x;
 }
 

@@ -54,7 +54,15 @@ class EdgeGramSolver {
   std::vector<double> sweep_;                    ///< banded: Thomas elimination factors
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> matrix_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+  /// The sparse factorization is recomputed by every solve, so copies start without one (Eigen's
+  /// solvers cannot be copied); this keeps EdgeGramSolver, and so Simulator, copyable.
+  struct Factorization {
+    Factorization() = default;
+    Factorization(const Factorization&) {}
+    Factorization& operator=(const Factorization&) { return *this; }
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  };
+  Factorization factorization_;
 };
 
 }  // namespace yarn_tearing

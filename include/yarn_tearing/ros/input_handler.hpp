@@ -1,0 +1,62 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "yarn_tearing/AppliedForce.h"
+#include "yarn_tearing/Grasp.h"
+#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/ros/frame_transformer.hpp"
+
+namespace yarn_tearing {
+namespace ros_layer {
+
+/// Applied forces and grasps received on topics: validated, expressed in the fixed frame and
+/// handed to the simulator at the right steps.
+///
+/// Forces act until replaced for the same vertex, or for `duration` simulated seconds when > 0; a
+/// zero force clears. A grasped vertex is kinematic and follows the origin of its target frame,
+/// looked up once per stepping cycle and interpolated linearly over the cycle's steps.
+class InputHandler {
+ public:
+  /// `frames` must outlive this object.
+  explicit InputHandler(const FrameTransformer& frames);
+
+  /// Applies an applied_force message; throws InputRejected (non-finite values, unknown yarn,
+  /// vertex out of range, negative duration, unresolvable frame), leaving everything unchanged.
+  void handleAppliedForce(const AppliedForce& msg, Simulator& simulator);
+  /// Grasps or releases a vertex; throws InputRejected (unknown yarn or vertex, empty or
+  /// unresolvable target frame, releasing a vertex that is not grasped).
+  void handleGrasp(const Grasp& msg, Simulator& simulator);
+
+  /// Before a cycle of steps: looks up the grasp targets (a failing lookup keeps the last target
+  /// and warns, throttled).
+  void beginCycle();
+  /// Before each step: clears lapsed forces and moves grasped vertices `fraction` (0..1] of the way
+  /// from the previous cycle's target to this cycle's.
+  void beforeStep(Simulator& simulator, double fraction);
+
+  /// Forgets all forces and grasps (the simulator has been reset).
+  void clear();
+
+  std::size_t activeForces() const { return force_expiry_.size(); }
+  std::size_t activeGrasps() const { return grasps_.size(); }
+
+ private:
+  struct GraspTarget {
+    std::string frame;     ///< tf frame whose origin the vertex follows
+    std::string label;     ///< "vertex <i> of yarn '<name>'", for warnings
+    Eigen::Vector3d from;  ///< target at the start of the cycle [m]
+    Eigen::Vector3d to;    ///< target at the end of the cycle [m]
+    bool fresh = true;     ///< grasped during the last cycle: `from` is the vertex position
+  };
+
+  const FrameTransformer& frames_;
+  std::map<std::uint32_t, double> force_expiry_;  ///< vertex -> simulated expiry time [s] (inf)
+  std::map<std::uint32_t, GraspTarget> grasps_;   ///< vertex -> holder
+};
+
+}  // namespace ros_layer
+}  // namespace yarn_tearing

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <string>
+
+#include "yarn_tearing/core/scene.hpp"
+
+namespace yarn_tearing {
+namespace ros_layer {
+
+/// YAML text describing each yarn's material, published latched on yarn_materials:
+///   <yarn name>:
+///     material: <preset name or inline>
+///     breaking_stress: [Pa]    breaking_strain: [-]
+///     yield_stress: [Pa]       yield_strain: [-]
+///     youngs_modulus: [Pa]     area: [m^2] (load-bearing)   radius: [m]
+///     density: [kg/m^3]        plastic_viscosity: [Pa*s]
+///     curve: [[strain, stress [Pa]], ...]
+/// Every number is written so that YAML 1.1 readers (PyYAML) parse it as a float.
+std::string describeMaterialsYaml(const Scene& scene);
+
+/// `x` as a YAML float, e.g. 3.0e+08, 0.01, 0.0 (PyYAML needs a '.' before an exponent).
+std::string yamlFloat(double x);
+
+/// `text` as a double-quoted YAML scalar.
+std::string yamlQuoted(const std::string& text);
+
+}  // namespace ros_layer
+}  // namespace yarn_tearing

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <ros/time.h>
+
+#include <string>
+
+#include "yarn_tearing/YarnStateArray.h"
+#include "yarn_tearing/core/break_event.hpp"
+#include "yarn_tearing/core/scene.hpp"
+#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/ros/break_event_msg.hpp"
+
+namespace yarn_tearing {
+namespace ros_layer {
+
+/// ROS time of a simulated instant [s] (simulated time starts at 0).
+ros::Time simulatedStamp(double simulated_time);
+
+/// State of every yarn, with per-yarn local vertex and edge indices; positions, velocities and
+/// support forces are in `frame_id`; header.stamp is the simulated time.
+YarnStateArray toYarnStateArray(const Simulator& simulator, const std::string& frame_id);
+
+/// One break event; header.stamp = simulated time of the break, position in `frame_id`.
+BreakEventMsg toBreakEventMsg(const BreakEvent& event, const Scene& scene,
+                              const std::string& frame_id);
+
+}  // namespace ros_layer
+}  // namespace yarn_tearing

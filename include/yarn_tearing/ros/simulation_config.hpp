@@ -1,0 +1,28 @@
+#pragma once
+
+#include <ros/node_handle.h>
+
+#include <vector>
+
+#include "yarn_tearing/core/simulation_parameters.hpp"
+#include "yarn_tearing/core/yarn_spec.hpp"
+#include "yarn_tearing/ros/node_settings.hpp"
+
+namespace yarn_tearing {
+namespace ros_layer {
+
+/// Everything the node is configured with, read from its private parameters.
+struct SimulationConfig {
+  SimulationParameters parameters;  ///< physics parameters shared by all yarns
+  std::vector<YarnSpec> yarns;      ///< the yarns of the scene, in parameter order
+  NodeSettings node;                ///< timing, publishing and drawing settings
+};
+
+/// Reads and validates every parameter of the node from its private namespace (see
+/// config/default.yaml). Throws ParameterError naming the parameter, the value and what is
+/// allowed; also checks what the core checks (curve, yarn specs, simulation parameters), so that a
+/// config that loads also builds a Simulator.
+SimulationConfig loadSimulationConfig(const ros::NodeHandle& private_nh);
+
+}  // namespace ros_layer
+}  // namespace yarn_tearing

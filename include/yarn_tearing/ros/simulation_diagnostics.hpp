@@ -1,0 +1,57 @@
+#pragma once
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/node_handle.h>
+
+#include <cstdint>
+
+#include "yarn_tearing/core/step_health.hpp"
+
+namespace yarn_tearing {
+namespace ros_layer {
+
+/// Snapshot of the node's pacing, reported with the step health.
+struct PacingStatus {
+  double simulated_time = 0.0;       ///< [s]
+  double target_real_time_factor = 0.0;  ///< configured factor [-] (0 = as fast as possible)
+  std::uint64_t dropped_steps = 0;   ///< steps skipped because the loop fell behind
+  bool paused = false;
+  std::size_t active_forces = 0;
+  std::size_t active_grasps = 0;
+};
+
+/// Publishes /diagnostics (diagnostic_updater, period ~diagnostic_period, default 1 s) with the
+/// worst StepHealth since the last report and the real-time factor achieved over that window.
+/// Warns when the projection did not converge, steps were dropped or the achieved factor is below
+/// 90 % of the target; errors when a health value is not finite.
+class SimulationDiagnostics {
+ public:
+  SimulationDiagnostics(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
+
+  /// Accumulates one step's health.
+  void recordStep(const StepHealth& health);
+  /// Publishes when a period has passed; `wall_now` [s] (monotonic) measures the achieved factor.
+  void update(double wall_now, const PacingStatus& pacing);
+
+ private:
+  void report(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  diagnostic_updater::Updater updater_;
+  PacingStatus pacing_;
+  // Accumulated since the last report.
+  std::uint64_t steps_ = 0;
+  int max_iterations_ = 0;
+  double max_violation_ = 0.0;   ///< [-]
+  double max_residual_ = 0.0;    ///< [-]
+  std::uint64_t unconverged_ = 0;
+  bool finite_ = true;
+  // Window of the achieved real-time factor.
+  double window_wall_ = -1.0;    ///< [s]
+  double window_sim_ = 0.0;      ///< [s]
+  double achieved_factor_ = 0.0; ///< [-]
+  double wall_now_ = 0.0;        ///< [s]
+  std::uint64_t reported_dropped_ = 0;
+};
+
+}  // namespace ros_layer
+}  // namespace yarn_tearing

@@ -1,0 +1,16 @@
+#pragma once
+
+#include "yarn_tearing/core/yarn_spec.hpp"
+#include "yarn_tearing/ros/param_value.hpp"
+
+namespace yarn_tearing {
+namespace ros_layer {
+
+/// Reads one entry of ~yarns:
+/// {name, material, radius [m] | tex [g/km] (+ packing_fraction [-]), length [m], num_vertices,
+///  start [m], direction, pinned (vertex indices, negative from the end), end_mass [kg],
+///  weibull_modulus [-], seed}. Throws ParameterError naming the key, value and what is allowed.
+YarnSpec loadYarnSpec(const ParamValue& yarn, const ParamValue& presets);
+
+}  // namespace ros_layer
+}  // namespace yarn_tearing

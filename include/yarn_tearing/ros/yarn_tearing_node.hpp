@@ -1,0 +1,79 @@
+#pragma once
+
+#include <ros/ros.h>
+#include <std_srvs/Empty.h>
+#include <std_srvs/SetBool.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include "yarn_tearing/AppliedForce.h"
+#include "yarn_tearing/Grasp.h"
+#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/ros/frame_transformer.hpp"
+#include "yarn_tearing/ros/input_handler.hpp"
+#include "yarn_tearing/ros/marker_builder.hpp"
+#include "yarn_tearing/ros/rate_schedule.hpp"
+#include "yarn_tearing/ros/simulation_config.hpp"
+#include "yarn_tearing/ros/simulation_diagnostics.hpp"
+#include "yarn_tearing/ros/step_scheduler.hpp"
+
+namespace yarn_tearing {
+namespace ros_layer {
+
+/// The yarn_tearing_node: steps a Simulator at real_time_factor and connects it to ROS.
+///
+/// Topics (relative to the node's namespace): subscribes applied_force, grasp; publishes
+/// yarn_states and yarn_markers at publish_rate, break_events (one message per break, right after
+/// the step that tore), yarn_materials (latched YAML), /clock when publish_clock, /diagnostics.
+/// Services: ~reset (std_srvs/Empty), ~set_paused (std_srvs/SetBool).
+/// Single-threaded: callbacks run between stepping cycles in run().
+class YarnTearingNode {
+ public:
+  /// Builds the simulator; throws std::invalid_argument when the core rejects the configuration.
+  YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh, const SimulationConfig& config);
+
+  /// Steps, publishes and serves callbacks until ROS shuts down.
+  void run();
+
+ private:
+  void onAppliedForce(const AppliedForce::ConstPtr& msg);
+  void onGrasp(const Grasp::ConstPtr& msg);
+  bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
+  bool onSetPaused(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
+
+  /// Takes the steps that are due (or steps for a wall budget when as fast as possible).
+  void stepCycle();
+  /// One physics step; `fraction` (0..1] of the cycle done after it, for grasp interpolation.
+  void stepOnce(double fraction);
+  void publishBreakEvents();
+  void publishState();
+  void publishClock();
+  /// Wall seconds [s] until the loop must wake up again.
+  double idleTimeout() const;
+
+  SimulationConfig config_;
+  ros::NodeHandle nh_;
+  ros::NodeHandle private_nh_;
+  Simulator simulator_;
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+  FrameTransformer frames_;
+  InputHandler inputs_;
+  MarkerBuilder markers_;
+  StepScheduler scheduler_;
+  RateSchedule publish_schedule_;  ///< wall or simulated seconds, see NodeSettings
+  SimulationDiagnostics diagnostics_;
+  ros::Publisher states_pub_;
+  ros::Publisher breaks_pub_;
+  ros::Publisher markers_pub_;
+  ros::Publisher materials_pub_;
+  ros::Publisher clock_pub_;
+  ros::Subscriber force_sub_;
+  ros::Subscriber grasp_sub_;
+  ros::ServiceServer reset_srv_;
+  ros::ServiceServer pause_srv_;
+  bool paused_ = false;
+};
+
+}  // namespace ros_layer
+}  // namespace yarn_tearing
