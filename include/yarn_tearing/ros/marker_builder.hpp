@@ -48,8 +48,8 @@ class MarkerBuilder {
                                     const ros::Time& stamp) const;
 
   std::string frame_id_;
-  double min_width_;                                    ///< [m]
-  std::vector<std::vector<Eigen::Vector3d>> breaks_;    ///< per yarn, positions [m]
+  double min_width_;                                  ///< [m]
+  std::vector<std::vector<Eigen::Vector3d>> breaks_;  ///< per yarn, positions [m]
   bool first_build_ = true;
 };
 

@@ -18,8 +18,8 @@ class RateSchedule {
   double secondsUntilDue(double now) const;
 
  private:
-  double period_;        ///< [s]
-  double next_ = 0.0;    ///< [s]
+  double period_;      ///< [s]
+  double next_ = 0.0;  ///< [s]
 };
 
 }  // namespace ros_layer

@@ -12,9 +12,9 @@ namespace ros_layer {
 
 /// Snapshot of the node's pacing, reported with the step health.
 struct PacingStatus {
-  double simulated_time = 0.0;       ///< [s]
+  double simulated_time = 0.0;           ///< [s]
   double target_real_time_factor = 0.0;  ///< configured factor [-] (0 = as fast as possible)
-  std::uint64_t dropped_steps = 0;   ///< steps skipped because the loop fell behind
+  std::uint64_t dropped_steps = 0;       ///< steps skipped because the loop fell behind
   bool paused = false;
   std::size_t active_forces = 0;
   std::size_t active_grasps = 0;
@@ -41,15 +41,15 @@ class SimulationDiagnostics {
   // Accumulated since the last report.
   std::uint64_t steps_ = 0;
   int max_iterations_ = 0;
-  double max_violation_ = 0.0;   ///< [-]
-  double max_residual_ = 0.0;    ///< [-]
+  double max_violation_ = 0.0;  ///< [-]
+  double max_residual_ = 0.0;   ///< [-]
   std::uint64_t unconverged_ = 0;
   bool finite_ = true;
   // Window of the achieved real-time factor.
-  double window_wall_ = -1.0;    ///< [s]
-  double window_sim_ = 0.0;      ///< [s]
-  double achieved_factor_ = 0.0; ///< [-]
-  double wall_now_ = 0.0;        ///< [s]
+  double window_wall_ = -1.0;     ///< [s]
+  double window_sim_ = 0.0;       ///< [s]
+  double achieved_factor_ = 0.0;  ///< [-]
+  double wall_now_ = 0.0;         ///< [s]
   std::uint64_t reported_dropped_ = 0;
 };
 

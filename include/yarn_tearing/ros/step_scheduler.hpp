@@ -26,9 +26,6 @@ class StepScheduler {
   /// possible (use a wall budget instead).
   std::uint64_t stepsDue(double wall_now, double sim_time);
 
-  /// Wall seconds [s] from `wall_now` until the next step is due (0 when one is due already).
-  double secondsUntilNextStep(double wall_now, double sim_time) const;
-
   /// Steps dropped so far because the backlog exceeded max_lag.
   std::uint64_t droppedSteps() const { return dropped_steps_; }
 

@@ -16,6 +16,7 @@
 #include "yarn_tearing/ros/simulation_config.hpp"
 #include "yarn_tearing/ros/simulation_diagnostics.hpp"
 #include "yarn_tearing/ros/step_scheduler.hpp"
+#include "yarn_tearing/ros/warning_throttle.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
@@ -38,6 +39,9 @@ class YarnTearingNode {
  private:
   void onAppliedForce(const AppliedForce::ConstPtr& msg);
   void onGrasp(const Grasp::ConstPtr& msg);
+  /// Warns (throttled per distinct text) that an input message was refused.
+  void warnRefused(const std::string& topic, const std::string& yarn, int vertex,
+                   const std::string& reason);
   bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
   bool onSetPaused(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
 
@@ -50,6 +54,8 @@ class YarnTearingNode {
   void publishClock();
   /// Wall seconds [s] until the loop must wake up again.
   double idleTimeout() const;
+  /// Pacing figures for the diagnostics.
+  PacingStatus pacingStatus() const;
 
   SimulationConfig config_;
   ros::NodeHandle nh_;
@@ -63,6 +69,7 @@ class YarnTearingNode {
   StepScheduler scheduler_;
   RateSchedule publish_schedule_;  ///< wall or simulated seconds, see NodeSettings
   SimulationDiagnostics diagnostics_;
+  WarningThrottle refusal_warnings_;
   ros::Publisher states_pub_;
   ros::Publisher breaks_pub_;
   ros::Publisher markers_pub_;

@@ -1,0 +1,139 @@
+#include "yarn_tearing/ros/simulation_config.hpp"
+
+#include <limits>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include "yarn_tearing/core/scene.hpp"
+#include "yarn_tearing/ros/param_value.hpp"
+#include "yarn_tearing/ros/parameter_error.hpp"
+#include "yarn_tearing/ros/yarn_spec_loader.hpp"
+
+namespace yarn_tearing {
+namespace ros_layer {
+namespace {
+
+constexpr double kUnbounded = std::numeric_limits<double>::max();
+
+/// Reads the private parameters of one node; missing parameters keep their defaults.
+class PrivateParams {
+ public:
+  explicit PrivateParams(const ros::NodeHandle& nh) : nh_(nh) {}
+
+  std::optional<ParamValue> get(const std::string& key) const {
+    XmlRpc::XmlRpcValue value;
+    if (!nh_.getParam(key, value)) {
+      return std::nullopt;
+    }
+    return ParamValue(nh_.resolveName(key), value);
+  }
+
+  ParamValue required(const std::string& key, const std::string& allowed) const {
+    std::optional<ParamValue> value = get(key);
+    if (!value) {
+      throw ParameterError("missing parameter " + nh_.resolveName(key) + ": expected " + allowed);
+    }
+    return *value;
+  }
+
+  template <typename Read>
+  void read(const std::string& key, Read read_value) const {
+    if (std::optional<ParamValue> value = get(key)) {
+      read_value(*value);
+    }
+  }
+
+ private:
+  const ros::NodeHandle& nh_;
+};
+
+ProjectionMethod parseProjectionMethod(const ParamValue& value) {
+  const std::string method = value.string(false);
+  if (method == "fast_projection") {
+    return ProjectionMethod::kFastProjection;
+  }
+  if (method == "gauss_seidel") {
+    return ProjectionMethod::kGaussSeidel;
+  }
+  value.fail("'fast_projection' or 'gauss_seidel'");
+}
+
+NodeSettings loadNodeSettings(const PrivateParams& params) {
+  NodeSettings node;
+  params.read("frame_id", [&](const ParamValue& v) { node.frame_id = v.string(false); });
+  params.read("real_time_factor",
+              [&](const ParamValue& v) { node.real_time_factor = v.number(0.0, 1.0e6, ""); });
+  params.read("publish_rate",
+              [&](const ParamValue& v) { node.publish_rate = v.number(1.0e-3, 1000.0, "Hz"); });
+  params.read("publish_clock", [&](const ParamValue& v) { node.publish_clock = v.boolean(); });
+  params.read("max_lag", [&](const ParamValue& v) { node.max_lag = v.number(1.0e-3, 10.0, "s"); });
+  params.read("marker_width",
+              [&](const ParamValue& v) { node.marker_width = v.nonNegativeNumber("m"); });
+  return node;
+}
+
+SimulationParameters loadPhysics(const PrivateParams& params) {
+  SimulationParameters p;
+  params.read("time_step", [&](const ParamValue& v) { p.time_step = v.number(1.0e-7, 0.1, "s"); });
+  params.read("gravity", [&](const ParamValue& v) { p.gravity = v.vector3("m/s^2"); });
+  params.read("regularization",
+              [&](const ParamValue& v) { p.regularization = v.number(0.0, 1.0, ""); });
+  params.read("air_damping",
+              [&](const ParamValue& v) { p.air_damping = v.nonNegativeNumber("N*s/m^2"); });
+  params.read("soft_spring_ratio",
+              [&](const ParamValue& v) { p.soft_spring_ratio = v.number(0.0, 1.0, ""); });
+  params.read("constraint_tolerance",
+              [&](const ParamValue& v) { p.constraint_tolerance = v.number(1.0e-15, 0.1, ""); });
+  params.read("max_projection_iterations",
+              [&](const ParamValue& v) { p.max_projection_iterations = v.integer(1, 100000); });
+  params.read("projection_method",
+              [&](const ParamValue& v) { p.projection_method = parseProjectionMethod(v); });
+  params.read("breaking_enabled", [&](const ParamValue& v) { p.breaking_enabled = v.boolean(); });
+  try {
+    p.validate();
+  } catch (const std::invalid_argument& e) {
+    throw ParameterError(std::string("invalid simulation parameters: ") + e.what());
+  }
+  return p;
+}
+
+std::vector<YarnSpec> loadYarns(const PrivateParams& params) {
+  const std::string allowed = "a non-empty list of yarns (see config/default.yaml)";
+  const ParamValue yarns = params.required("yarns", allowed);
+  const ParamValue presets =
+      params.get("materials").value_or(ParamValue("~materials", XmlRpc::XmlRpcValue()));
+  const std::vector<ParamValue> entries = yarns.elements();
+  if (entries.empty()) {
+    yarns.fail(allowed);
+  }
+  std::vector<YarnSpec> specs;
+  std::set<std::string> names;
+  for (const ParamValue& entry : entries) {
+    specs.push_back(loadYarnSpec(entry, presets));
+    if (!names.insert(specs.back().name).second) {
+      entry.member("name").fail("a name that no other yarn has");
+    }
+  }
+  try {
+    buildScene(specs);
+  } catch (const std::exception& e) {
+    yarns.fail(std::string("yarns that build a scene (") + e.what() + ")");
+  }
+  return specs;
+}
+
+}  // namespace
+
+SimulationConfig loadSimulationConfig(const ros::NodeHandle& private_nh) {
+  const PrivateParams params(private_nh);
+  SimulationConfig config;
+  config.node = loadNodeSettings(params);
+  config.parameters = loadPhysics(params);
+  config.yarns = loadYarns(params);
+  return config;
+}
+
+}  // namespace ros_layer
+}  // namespace yarn_tearing

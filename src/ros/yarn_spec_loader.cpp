@@ -1,0 +1,92 @@
+#include "yarn_tearing/ros/yarn_spec_loader.hpp"
+
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "yarn_tearing/ros/material_loader.hpp"
+#include "yarn_tearing/ros/parameter_error.hpp"
+
+namespace yarn_tearing {
+namespace ros_layer {
+namespace {
+
+constexpr int kMaxVertices = 100000;
+
+void loadSize(const ParamValue& yarn, YarnSpec& spec) {
+  if (yarn.has("radius") && yarn.has("tex")) {
+    yarn.member("tex").fail("either radius [m] or tex [g/km] in one yarn, not both");
+  }
+  if (yarn.has("tex")) {
+    spec.tex = yarn.member("tex").positiveNumber("g/km");
+    spec.radius = 0.0;
+    if (yarn.has("packing_fraction")) {
+      spec.packing_fraction = yarn.member("packing_fraction").number(1.0e-3, 1.0, "");
+    }
+  } else {
+    if (yarn.has("packing_fraction")) {
+      yarn.member("packing_fraction").fail("packing_fraction only together with tex");
+    }
+    spec.radius = yarn.member("radius").positiveNumber("m");
+  }
+}
+
+std::vector<int> loadPinned(const ParamValue& pinned, int num_vertices) {
+  std::vector<int> list = pinned.integerList();
+  for (int index : list) {
+    if (index < -num_vertices || index >= num_vertices) {
+      pinned.fail("vertex indices in [" + std::to_string(-num_vertices) + ", " +
+                  std::to_string(num_vertices - 1) + "] (negative counts from the end)");
+    }
+  }
+  return list;
+}
+
+}  // namespace
+
+YarnSpec loadYarnSpec(const ParamValue& yarn, const ParamValue& presets) {
+  if (!yarn.isStruct()) {
+    yarn.fail("a map {name, material, radius, length, num_vertices, start, direction, pinned}");
+  }
+  yarn.requireKeysIn({"name", "material", "radius", "tex", "packing_fraction", "length",
+                      "num_vertices", "start", "direction", "pinned", "end_mass", "weibull_modulus",
+                      "seed"});
+  YarnSpec spec;
+  spec.name = yarn.member("name").string(false);
+  spec.material = loadMaterial(yarn.member("material"), presets);
+  loadSize(yarn, spec);
+  spec.length = yarn.member("length").positiveNumber("m");
+  spec.num_vertices = yarn.member("num_vertices").integer(2, kMaxVertices);
+  if (yarn.has("start")) {
+    spec.start = yarn.member("start").vector3("m");
+  }
+  if (yarn.has("direction")) {
+    const ParamValue direction = yarn.member("direction");
+    spec.direction = direction.vector3("");
+    if (!(spec.direction.norm() > 0.0)) {
+      direction.fail("a non-zero vector [x, y, z]");
+    }
+  }
+  if (yarn.has("pinned")) {
+    spec.pinned = loadPinned(yarn.member("pinned"), spec.num_vertices);
+  }
+  if (yarn.has("end_mass")) {
+    spec.end_mass = yarn.member("end_mass").nonNegativeNumber("kg");
+  }
+  if (yarn.has("weibull_modulus")) {
+    spec.strength_scatter.weibull_modulus = yarn.member("weibull_modulus").nonNegativeNumber("");
+  }
+  if (yarn.has("seed")) {
+    spec.strength_scatter.seed = static_cast<unsigned long long>(
+        yarn.member("seed").integer(0, std::numeric_limits<int>::max()));
+  }
+  try {
+    spec.validate();
+  } catch (const std::invalid_argument& e) {
+    yarn.fail(std::string("a valid yarn (") + e.what() + ")");
+  }
+  return spec;
+}
+
+}  // namespace ros_layer
+}  // namespace yarn_tearing

@@ -1,0 +1,220 @@
+#include "yarn_tearing/ros/yarn_tearing_node.hpp"
+
+#include <ros/callback_queue.h>
+#include <rosgraph_msgs/Clock.h>
+#include <std_msgs/String.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "yarn_tearing/YarnStateArray.h"
+#include "yarn_tearing/ros/break_event_msg.hpp"
+#include "yarn_tearing/ros/materials_description.hpp"
+#include "yarn_tearing/ros/message_conversion.hpp"
+
+namespace yarn_tearing {
+namespace ros_layer {
+namespace {
+
+constexpr double kWarnPeriod = 2.0;     ///< [s] between repeats of one refusal warning
+constexpr double kCyclePeriod = 0.005;  ///< [s] wall: longest sleep between stepping cycles
+constexpr double kStepBudget = 0.02;    ///< [s] wall: longest stepping before serving callbacks
+constexpr std::uint32_t kBreakQueue = 10000;  ///< break_events must never be dropped
+constexpr std::uint32_t kStateQueue = 10;
+constexpr std::uint32_t kInputQueue = 100;
+
+/// Monotonic wall time [s].
+double wallSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
+                                 const SimulationConfig& config)
+    : config_(config),
+      nh_(nh),
+      private_nh_(private_nh),
+      simulator_(config.parameters, config.yarns),
+      tf_listener_(tf_buffer_),
+      frames_(tf_buffer_, config.node.frame_id),
+      inputs_(frames_),
+      markers_(config.node.frame_id, config.node.marker_width),
+      scheduler_(config.parameters.time_step, config.node.real_time_factor, config.node.max_lag),
+      publish_schedule_(config.node.publish_rate),
+      diagnostics_(nh, private_nh),
+      refusal_warnings_(kWarnPeriod) {
+  states_pub_ = nh_.advertise<YarnStateArray>("yarn_states", kStateQueue);
+  breaks_pub_ = nh_.advertise<BreakEventMsg>("break_events", kBreakQueue);
+  markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("yarn_markers", kStateQueue);
+  materials_pub_ = nh_.advertise<std_msgs::String>("yarn_materials", 1, /*latch=*/true);
+  if (config_.node.publish_clock) {
+    clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", kStateQueue);
+  }
+  force_sub_ = nh_.subscribe("applied_force", kInputQueue, &YarnTearingNode::onAppliedForce, this);
+  grasp_sub_ = nh_.subscribe("grasp", kInputQueue, &YarnTearingNode::onGrasp, this);
+  reset_srv_ = private_nh_.advertiseService("reset", &YarnTearingNode::onReset, this);
+  pause_srv_ = private_nh_.advertiseService("set_paused", &YarnTearingNode::onSetPaused, this);
+
+  std_msgs::String materials;
+  materials.data = describeMaterialsYaml(simulator_.scene());
+  materials_pub_.publish(materials);
+  ROS_INFO("yarn_tearing_node: %zu yarns, %zu vertices, time_step %g s, real_time_factor %g%s",
+           simulator_.scene().yarns.size(), simulator_.scene().vertices.size(),
+           config_.parameters.time_step, config_.node.real_time_factor,
+           config_.node.real_time_factor == 0.0 ? " (as fast as possible)" : "");
+}
+
+void YarnTearingNode::run() {
+  ros::CallbackQueue& queue = *ros::getGlobalCallbackQueue();
+  const bool simulated_rate = config_.node.publishesInSimulatedTime();
+  scheduler_.restart(wallSeconds(), simulator_.time());
+  publish_schedule_.restart(simulated_rate ? simulator_.time() : wallSeconds());
+  while (ros::ok()) {
+    queue.callAvailable();
+    stepCycle();
+    if (!simulated_rate && publish_schedule_.due(wallSeconds())) {
+      publishState();
+    }
+    diagnostics_.update(wallSeconds(), pacingStatus());
+    queue.callAvailable(ros::WallDuration(idleTimeout()));
+  }
+}
+
+PacingStatus YarnTearingNode::pacingStatus() const {
+  PacingStatus pacing;
+  pacing.simulated_time = simulator_.time();
+  pacing.target_real_time_factor = config_.node.real_time_factor;
+  pacing.dropped_steps = scheduler_.droppedSteps();
+  pacing.paused = paused_;
+  pacing.active_forces = inputs_.activeForces();
+  pacing.active_grasps = inputs_.activeGrasps();
+  return pacing;
+}
+
+double YarnTearingNode::idleTimeout() const {
+  if (!paused_ && scheduler_.asFastAsPossible()) {
+    return 0.0;
+  }
+  if (config_.node.publishesInSimulatedTime()) {
+    return kCyclePeriod;
+  }
+  return std::min(kCyclePeriod, publish_schedule_.secondsUntilDue(wallSeconds()));
+}
+
+void YarnTearingNode::stepCycle() {
+  if (paused_) {
+    return;
+  }
+  inputs_.beginCycle();
+  const double start = wallSeconds();
+  if (scheduler_.asFastAsPossible()) {
+    do {
+      stepOnce(1.0);
+    } while (wallSeconds() - start < kStepBudget);
+  } else {
+    const std::uint64_t due = scheduler_.stepsDue(start, simulator_.time());
+    for (std::uint64_t k = 1; k <= due; ++k) {
+      stepOnce(static_cast<double>(k) / static_cast<double>(due));
+      if (wallSeconds() - start > kStepBudget) {
+        break;  // the rest is caught up in the next cycles (or dropped after max_lag)
+      }
+    }
+  }
+  publishClock();
+}
+
+void YarnTearingNode::stepOnce(double fraction) {
+  inputs_.beforeStep(simulator_, fraction);
+  simulator_.step();
+  diagnostics_.recordStep(simulator_.lastHealth());
+  publishBreakEvents();
+  if (config_.node.publishesInSimulatedTime() && publish_schedule_.due(simulator_.time())) {
+    publishClock();
+    publishState();
+  }
+}
+
+void YarnTearingNode::publishBreakEvents() {
+  for (const BreakEvent& event : simulator_.takeBreakEvents()) {
+    const BreakEventMsg msg = toBreakEventMsg(event, simulator_.scene(), config_.node.frame_id);
+    breaks_pub_.publish(msg);
+    markers_.addBreak(event.yarn, event.position);
+    ROS_INFO(
+        "yarn '%s' tore at edge %d (vertices %d-%d) at t = %.4f s: tension %.4g N, "
+        "stress %.4g Pa, strain %.4g",
+        msg.yarn.c_str(), msg.edge, msg.vertex_a, msg.vertex_b, event.time, event.tension,
+        event.stress, event.strain);
+  }
+}
+
+void YarnTearingNode::publishState() {
+  const Scene& scene = simulator_.scene();
+  if (states_pub_.getNumSubscribers() > 0) {
+    states_pub_.publish(toYarnStateArray(simulator_, config_.node.frame_id));
+  }
+  if (markers_pub_.getNumSubscribers() > 0) {
+    markers_pub_.publish(markers_.build(scene, simulatedStamp(simulator_.time())));
+  }
+}
+
+void YarnTearingNode::publishClock() {
+  if (!config_.node.publish_clock) {
+    return;
+  }
+  rosgraph_msgs::Clock clock;
+  clock.clock = simulatedStamp(simulator_.time());
+  clock_pub_.publish(clock);
+}
+
+void YarnTearingNode::onAppliedForce(const AppliedForce::ConstPtr& msg) {
+  try {
+    inputs_.handleAppliedForce(*msg, simulator_);
+  } catch (const std::exception& e) {
+    warnRefused("applied_force", msg->yarn, msg->vertex, e.what());
+  }
+}
+
+void YarnTearingNode::onGrasp(const Grasp::ConstPtr& msg) {
+  try {
+    inputs_.handleGrasp(*msg, simulator_);
+  } catch (const std::exception& e) {
+    warnRefused("grasp", msg->yarn, msg->vertex, e.what());
+  }
+}
+
+void YarnTearingNode::warnRefused(const std::string& topic, const std::string& yarn, int vertex,
+                                  const std::string& reason) {
+  const std::string text =
+      topic + " refused (yarn '" + yarn + "', vertex " + std::to_string(vertex) + "): " + reason;
+  if (refusal_warnings_.shouldReport(text, wallSeconds())) {
+    ROS_WARN("%s", text.c_str());
+  }
+}
+
+bool YarnTearingNode::onReset(std_srvs::Empty::Request& /*request*/,
+                              std_srvs::Empty::Response& /*response*/) {
+  simulator_.reset();
+  inputs_.clear();
+  markers_.clearBreaks();
+  scheduler_.restart(wallSeconds(), simulator_.time());
+  publish_schedule_.restart(config_.node.publishesInSimulatedTime() ? simulator_.time()
+                                                                    : wallSeconds());
+  ROS_INFO("yarn_tearing_node: reset");
+  return true;
+}
+
+bool YarnTearingNode::onSetPaused(std_srvs::SetBool::Request& request,
+                                  std_srvs::SetBool::Response& response) {
+  if (paused_ && !request.data) {
+    scheduler_.restart(wallSeconds(), simulator_.time());
+  }
+  paused_ = request.data;
+  response.success = true;
+  response.message = paused_ ? "paused" : "running";
+  return true;
+}
+
+}  // namespace ros_layer
+}  // namespace yarn_tearing

@@ -1,0 +1,45 @@
+#!/usr/bin/python3
+"""Through topics only: force_ramp pulls a pinned yarn until it tears; the break event's tension
+matches the closed-form breaking tension sigma_b * pi * r^2 from this test's own config (2 %)."""
+import math
+import unittest
+
+import rospy
+import rostest
+
+import yarn_rostest_support as support
+
+TOLERANCE = 0.02
+
+
+class TearingTest(unittest.TestCase):
+    def test_force_ramp_tears_at_breaking_tension(self):
+        rospy.init_node("tearing_test")
+        config = support.load_yaml(rospy.get_param("~config"))
+        yarn = config["yarns"][0]
+        breaking_stress = yarn["material"]["stress_strain"][-1][1]  # sigma_b [Pa]
+        breaking_tension = breaking_stress * math.pi * yarn["radius"] ** 2  # [N]
+
+        breaks = support.BreakRecorder()
+        self.assertTrue(support.wait_until(breaks.events, timeout=40.0), "no break_events")
+        rospy.sleep(0.5)  # any further (wrong) events
+        events = breaks.events()
+        self.assertEqual(len(events), 1, "one break expected, got %d" % len(events))
+        event = events[0]
+        self.assertEqual(event.yarn, yarn["name"])
+        self.assertEqual(event.header.frame_id, config["frame_id"])
+        self.assertGreater(event.header.stamp.to_sec(), 0.0)
+        self.assertTrue(0 <= event.edge < yarn["num_vertices"] - 1)
+        self.assertEqual((event.vertex_a, event.vertex_b), (event.edge, event.edge + 1))
+        self.assertLess(abs(event.tension - breaking_tension) / breaking_tension, TOLERANCE,
+                        "tension %.4f N at the break, expected sigma_b pi r^2 = %.4f N"
+                        % (event.tension, breaking_tension))
+        self.assertLess(abs(event.stress - breaking_stress) / breaking_stress, TOLERANCE)
+        self.assertAlmostEqual(event.strain, yarn["material"]["stress_strain"][-1][0],
+                               delta=TOLERANCE * yarn["material"]["stress_strain"][-1][0])
+        self.assertAlmostEqual(event.position.x, yarn["start"][0], delta=1.0e-3)
+        self.assertLess(event.position.z, yarn["start"][2])
+
+
+if __name__ == "__main__":
+    rostest.rosrun("yarn_tearing", "tearing", TearingTest)

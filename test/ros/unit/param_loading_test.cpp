@@ -1,0 +1,180 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "xmlrpc_builders.hpp"
+#include "yarn_tearing/ros/material_loader.hpp"
+#include "yarn_tearing/ros/param_value.hpp"
+#include "yarn_tearing/ros/parameter_error.hpp"
+#include "yarn_tearing/ros/yarn_spec_loader.hpp"
+
+namespace yarn_tearing {
+namespace ros_layer {
+namespace {
+
+using testing::curve;
+using testing::inlineMaterial;
+using testing::list;
+using testing::validYarn;
+
+const ParamValue kNoPresets("/node/materials", XmlRpc::XmlRpcValue());
+
+ParamValue yarnParam(const XmlRpc::XmlRpcValue& yarn) { return ParamValue("/node/yarns[0]", yarn); }
+
+/// what() of the ParameterError that loading `yarn` throws ("" when none).
+std::string loadError(const XmlRpc::XmlRpcValue& yarn, const ParamValue& presets = kNoPresets) {
+  try {
+    loadYarnSpec(yarnParam(yarn), presets);
+  } catch (const ParameterError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(YarnSpecLoader, LoadsAValidYarn) {
+  XmlRpc::XmlRpcValue yarn = validYarn("weak");
+  yarn["start"] = list({0.1, 0.0, 0.0});
+  yarn["direction"] = list({0.0, 0.0, -2.0});
+  yarn["pinned"] = list({0, -1});
+  yarn["end_mass"] = 0.01;
+  yarn["weibull_modulus"] = 10.0;
+  yarn["seed"] = 7;
+  const YarnSpec spec = loadYarnSpec(yarnParam(yarn), kNoPresets);
+  EXPECT_EQ(spec.name, "weak");
+  EXPECT_EQ(spec.material.name, "inline");
+  EXPECT_DOUBLE_EQ(spec.material.density, 1500.0);
+  EXPECT_DOUBLE_EQ(spec.material.curve.breakingStress(), 3.0e8);
+  EXPECT_DOUBLE_EQ(spec.radius, 1.0e-4);
+  EXPECT_EQ(spec.num_vertices, 5);
+  EXPECT_DOUBLE_EQ(spec.start.x(), 0.1);
+  EXPECT_DOUBLE_EQ(spec.direction.z(), -2.0);
+  EXPECT_EQ(spec.pinned, (std::vector<int>{0, -1}));
+  EXPECT_DOUBLE_EQ(spec.end_mass, 0.01);
+  EXPECT_DOUBLE_EQ(spec.strength_scatter.weibull_modulus, 10.0);
+  EXPECT_EQ(spec.strength_scatter.seed, 7ULL);
+}
+
+TEST(YarnSpecLoader, AcceptsIntegersForNumbers) {
+  XmlRpc::XmlRpcValue yarn = validYarn();
+  yarn["length"] = 1;
+  EXPECT_DOUBLE_EQ(loadYarnSpec(yarnParam(yarn), kNoPresets).length, 1.0);
+}
+
+TEST(YarnSpecLoader, ErrorNamesParameterValueAndAllowedRange) {
+  XmlRpc::XmlRpcValue yarn = validYarn();
+  yarn["radius"] = -0.5;
+  const std::string error = loadError(yarn);
+  EXPECT_NE(error.find("/node/yarns[0].radius"), std::string::npos) << error;
+  EXPECT_NE(error.find("-0.5"), std::string::npos) << error;
+  EXPECT_NE(error.find("> 0 [m]"), std::string::npos) << error;
+}
+
+TEST(YarnSpecLoader, RejectsWrongTypes) {
+  XmlRpc::XmlRpcValue yarn = validYarn();
+  yarn["num_vertices"] = 2.5;
+  EXPECT_NE(loadError(yarn).find("num_vertices"), std::string::npos);
+  yarn = validYarn();
+  yarn["name"] = 3;
+  EXPECT_NE(loadError(yarn).find("name"), std::string::npos);
+  yarn = validYarn();
+  yarn["start"] = list({0.0, 1.0});
+  EXPECT_NE(loadError(yarn).find("start"), std::string::npos);
+}
+
+TEST(YarnSpecLoader, RejectsUnknownKeysListingTheAllowedOnes) {
+  XmlRpc::XmlRpcValue yarn = validYarn();
+  yarn["lenght"] = 0.1;
+  const std::string error = loadError(yarn);
+  EXPECT_NE(error.find("unknown key 'lenght'"), std::string::npos) << error;
+  EXPECT_NE(error.find("length"), std::string::npos) << error;
+}
+
+TEST(YarnSpecLoader, RejectsPinnedIndicesOutOfRange) {
+  XmlRpc::XmlRpcValue yarn = validYarn();
+  yarn["pinned"] = list({0, 5});
+  EXPECT_NE(loadError(yarn).find("[-5, 4]"), std::string::npos);
+  yarn["pinned"] = list({-6});
+  EXPECT_NE(loadError(yarn).find("pinned"), std::string::npos);
+  yarn["pinned"] = list({-5, 4});
+  EXPECT_EQ(loadError(yarn), "");
+}
+
+TEST(YarnSpecLoader, TexSizesTheYarnInsteadOfRadius) {
+  XmlRpc::XmlRpcValue yarn = validYarn();
+  yarn["tex"] = 20.0;
+  EXPECT_NE(loadError(yarn).find("either radius"), std::string::npos);
+  yarn = validYarn();
+  yarn["packing_fraction"] = 0.5;
+  EXPECT_NE(loadError(yarn).find("packing_fraction"), std::string::npos);
+}
+
+TEST(YarnSpecLoader, RejectsZeroDirection) {
+  XmlRpc::XmlRpcValue yarn = validYarn();
+  yarn["direction"] = list({0.0, 0.0, 0.0});
+  EXPECT_NE(loadError(yarn).find("direction"), std::string::npos);
+}
+
+TEST(MaterialLoader, LooksUpPresetsByName) {
+  XmlRpc::XmlRpcValue presets;
+  presets["cotton"] = inlineMaterial();
+  presets["cotton"]["source"] = "a book";
+  presets["cotton"]["plastic_viscosity"] = 2.0;
+  const ParamValue preset_param("/node/materials", presets);
+  const Material material =
+      loadMaterial(ParamValue("/node/yarns[0].material", "cotton"), preset_param);
+  EXPECT_EQ(material.name, "cotton");
+  EXPECT_DOUBLE_EQ(material.plastic_viscosity, 2.0);
+
+  try {
+    loadMaterial(ParamValue("/node/yarns[0].material", "silk"), preset_param);
+    FAIL() << "unknown preset accepted";
+  } catch (const ParameterError& e) {
+    const std::string error = e.what();
+    EXPECT_NE(error.find("'silk'"), std::string::npos) << error;
+    EXPECT_NE(error.find("(cotton)"), std::string::npos) << error;
+  }
+}
+
+TEST(MaterialLoader, RejectsInvalidCurvesWithTheCoreReason) {
+  XmlRpc::XmlRpcValue material = inlineMaterial();
+  material["stress_strain"] = list({list({0.0, 0.0}), list({0.02, 1.0e8}), list({0.01, 2.0e8})});
+  try {
+    loadMaterial(ParamValue("/node/yarns[0].material", material), kNoPresets);
+    FAIL() << "non-monotonic curve accepted";
+  } catch (const ParameterError& e) {
+    const std::string error = e.what();
+    EXPECT_NE(error.find("/node/yarns[0].material.stress_strain"), std::string::npos) << error;
+    EXPECT_NE(error.find("increasing"), std::string::npos) << error;
+  }
+}
+
+TEST(MaterialLoader, RejectsMissingDensityAndUnknownKeys) {
+  XmlRpc::XmlRpcValue material;
+  material["stress_strain"] = curve();
+  EXPECT_THROW(loadMaterial(ParamValue("/m", material), kNoPresets), ParameterError);
+  material = inlineMaterial();
+  material["modulus"] = 1.0e9;
+  EXPECT_THROW(loadMaterial(ParamValue("/m", material), kNoPresets), ParameterError);
+}
+
+TEST(ParamValue, HintsAtYamlNumbersReadAsStrings) {
+  try {
+    ParamValue("/node/time_step", "1e-3").positiveNumber("s");
+    FAIL() << "string accepted as a number";
+  } catch (const ParameterError& e) {
+    EXPECT_NE(std::string(e.what()).find("signed exponent"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ParamValue, RejectsNonFiniteNumbers) {
+  EXPECT_THROW(ParamValue("/x", std::numeric_limits<double>::infinity()).nonNegativeNumber(""),
+               ParameterError);
+  EXPECT_THROW(ParamValue("/x", std::nan("")).number(0.0, 1.0, ""), ParameterError);
+  EXPECT_DOUBLE_EQ(ParamValue("/x", 0.5).number(0.0, 1.0, ""), 0.5);
+}
+
+}  // namespace
+}  // namespace ros_layer
+}  // namespace yarn_tearing
