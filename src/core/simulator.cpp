@@ -238,8 +238,8 @@ void Simulator::releaseVertex(std::uint32_t vertex) {
   if (was_pinned) scene_.vertices.velocity[vertex].setZero();
 }
 
-std::vector<BreakEvent> Simulator::takeBreakEvents() {
-  std::vector<BreakEvent> events;
+std::vector<TearEvent> Simulator::takeBreakEvents() {
+  std::vector<TearEvent> events;
   events.swap(pending_events_);
   return events;
 }

@@ -54,11 +54,11 @@ const std::vector<std::uint32_t>& Tearing::collect(const Scene& scene) {
   return collected_;
 }
 
-void Tearing::apply(Scene& scene, double time, std::vector<BreakEvent>& events) {
+void Tearing::apply(Scene& scene, double time, std::vector<TearEvent>& events) {
   EdgeSet& edges = scene.edges;
   for (std::uint32_t e : collected_) {
     const Yarn& yarn = scene.yarns[edges.yarn[e]];
-    BreakEvent event;
+    TearEvent event;
     event.yarn = edges.yarn[e];
     event.edge = e - yarn.first_edge;
     event.vertex_a = edges.vertex_a[e] - yarn.first_vertex;

@@ -50,9 +50,9 @@ YarnStateArray toYarnStateArray(const Simulator& simulator, const std::string& f
   return array;
 }
 
-BreakEventMsg toBreakEventMsg(const BreakEvent& event, const Scene& scene,
-                              const std::string& frame_id) {
-  BreakEventMsg msg;
+BreakEvent toBreakEventMsg(const TearEvent& event, const Scene& scene,
+                           const std::string& frame_id) {
+  BreakEvent msg;
   msg.header.stamp = simulatedStamp(event.time);
   msg.header.frame_id = frame_id;
   msg.yarn = scene.yarns.at(event.yarn).name;

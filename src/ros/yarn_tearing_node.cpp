@@ -4,12 +4,12 @@
 #include <rosgraph_msgs/Clock.h>
 #include <std_msgs/String.h>
 #include <visualization_msgs/MarkerArray.h>
+#include <yarn_tearing/BreakEvent.h>
 
 #include <algorithm>
 #include <chrono>
 
 #include "yarn_tearing/YarnStateArray.h"
-#include "yarn_tearing/ros/break_event_msg.hpp"
 #include "yarn_tearing/ros/materials_description.hpp"
 #include "yarn_tearing/ros/message_conversion.hpp"
 
@@ -46,7 +46,7 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
       diagnostics_(nh, private_nh),
       refusal_warnings_(kWarnPeriod) {
   states_pub_ = nh_.advertise<YarnStateArray>("yarn_states", kStateQueue);
-  breaks_pub_ = nh_.advertise<BreakEventMsg>("break_events", kBreakQueue);
+  breaks_pub_ = nh_.advertise<BreakEvent>("break_events", kBreakQueue);
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("yarn_markers", kStateQueue);
   materials_pub_ = nh_.advertise<std_msgs::String>("yarn_materials", 1, /*latch=*/true);
   if (config_.node.publish_clock) {
@@ -137,8 +137,8 @@ void YarnTearingNode::stepOnce(double fraction) {
 }
 
 void YarnTearingNode::publishBreakEvents() {
-  for (const BreakEvent& event : simulator_.takeBreakEvents()) {
-    const BreakEventMsg msg = toBreakEventMsg(event, simulator_.scene(), config_.node.frame_id);
+  for (const TearEvent& event : simulator_.takeBreakEvents()) {
+    const BreakEvent msg = toBreakEventMsg(event, simulator_.scene(), config_.node.frame_id);
     breaks_pub_.publish(msg);
     markers_.addBreak(event.yarn, event.position);
     ROS_INFO(

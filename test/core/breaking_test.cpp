@@ -17,13 +17,13 @@ struct RampedYarn {
     return s;
   }
   /// Steps until the first break or `max_time` [s]; returns the events.
-  std::vector<BreakEvent> runUntilBreak(double max_time) {
+  std::vector<TearEvent> runUntilBreak(double max_time) {
     const auto last = static_cast<std::uint32_t>(sim.scene().vertices.size() - 1);
     while (sim.time() < max_time) {
       sim.setAppliedForce(
           last, Eigen::Vector3d(rate * (sim.time() + sim.parameters().time_step), 0.0, 0.0));
       sim.step();
-      std::vector<BreakEvent> events = sim.takeBreakEvents();
+      std::vector<TearEvent> events = sim.takeBreakEvents();
       if (!events.empty()) return events;
     }
     return {};
@@ -37,7 +37,7 @@ TEST(Breaking, SlowRampBreaksAtBreakingStressTimesArea) {
   const Material material = cottonLike();
   const double breaking_force = material.curve.breakingStress() * kPi * 1.0e-8;
   RampedYarn ramp(material, breaking_force / 2.0);  // reaches it after 2 s
-  const std::vector<BreakEvent> events = ramp.runUntilBreak(4.0);
+  const std::vector<TearEvent> events = ramp.runUntilBreak(4.0);
   ASSERT_EQ(events.size(), 1u);
   EXPECT_NEAR(events[0].tension, breaking_force, 0.01 * breaking_force);
   EXPECT_NEAR(events[0].time, 2.0, 0.02);
@@ -72,13 +72,13 @@ TEST(Breaking, WeakerYarnBreaksFirstUnderTheSameForce) {
   const std::uint32_t weak_end = sim.scene().globalVertex(0, -1);
   const std::uint32_t strong_end = sim.scene().globalVertex(1, -1);
   const double rate = 5.0;  // [N/s]
-  std::vector<BreakEvent> all;
+  std::vector<TearEvent> all;
   while (sim.time() < 5.0) {
     const Eigen::Vector3d f(rate * (sim.time() + 1e-3), 0.0, 0.0);
     sim.setAppliedForce(weak_end, f);
     sim.setAppliedForce(strong_end, f);
     sim.step();
-    for (const BreakEvent& e : sim.takeBreakEvents()) all.push_back(e);
+    for (const TearEvent& e : sim.takeBreakEvents()) all.push_back(e);
     if (all.size() >= 2) break;
   }
   ASSERT_GE(all.size(), 2u);
@@ -133,8 +133,8 @@ TEST(Breaking, SameInputsGiveBitwiseSameOutputs) {
     RampedYarn ramp(spec, 8.0);
     return ramp.runUntilBreak(5.0);
   };
-  const std::vector<BreakEvent> a = run();
-  const std::vector<BreakEvent> b = run();
+  const std::vector<TearEvent> a = run();
+  const std::vector<TearEvent> b = run();
   ASSERT_EQ(a.size(), 1u);
   ASSERT_EQ(b.size(), 1u);
   EXPECT_EQ(a[0].edge, b[0].edge);
@@ -153,7 +153,7 @@ TEST(Breaking, StrengthScatterChoosesTheWeakestEdge) {
   for (std::size_t e = 0; e < edges.size(); ++e) {
     if (edges.strength_factor[e] < edges.strength_factor[weakest]) weakest = e;
   }
-  const std::vector<BreakEvent> events = ramp.runUntilBreak(5.0);
+  const std::vector<TearEvent> events = ramp.runUntilBreak(5.0);
   ASSERT_EQ(events.size(), 1u);
   EXPECT_EQ(events[0].edge, weakest);
 }

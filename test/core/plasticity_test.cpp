@@ -80,7 +80,7 @@ double plasticStrainAtBreak(const Material& material, double rate) {
         yarn.end(),
         Eigen::Vector3d(rate * (yarn.sim.time() + yarn.sim.parameters().time_step), 0.0, 0.0));
     yarn.sim.step();
-    const std::vector<BreakEvent> events = yarn.sim.takeBreakEvents();
+    const std::vector<TearEvent> events = yarn.sim.takeBreakEvents();
     if (!events.empty()) return events[0].plastic_strain;
   }
   ADD_FAILURE() << "no break";

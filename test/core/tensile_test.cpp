@@ -16,7 +16,7 @@ TEST(Tensile, DrawnAtConstantSpeedTearsAtTheBreakingPoint) {
   const std::uint32_t grasped = sim.scene().globalVertex(0, -1);
   const Eigen::Vector3d start = sim.scene().vertices.position[grasped];
   const double speed = 0.02;  // [m/s]: strain rate 0.067 /s
-  std::vector<BreakEvent> events;
+  std::vector<TearEvent> events;
   while (events.empty() && sim.time() < 3.0) {
     const double t = sim.time() + sim.parameters().time_step;
     sim.setKinematicTarget(grasped, start + Eigen::Vector3d(speed * t, 0.0, 0.0));

@@ -3,11 +3,11 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "yarn_tearing/core/break_event.hpp"
 #include "yarn_tearing/core/scene.hpp"
 #include "yarn_tearing/core/simulation_parameters.hpp"
 #include "yarn_tearing/core/step_health.hpp"
 #include "yarn_tearing/core/step_workspace.hpp"
+#include "yarn_tearing/core/tear_event.hpp"
 
 namespace yarn_tearing {
 
@@ -41,7 +41,7 @@ class Simulator {
   void releaseVertex(std::uint32_t vertex);
 
   /// Break events since the last call, in the order they happened; each is returned once.
-  std::vector<BreakEvent> takeBreakEvents();
+  std::vector<TearEvent> takeBreakEvents();
 
   /// Force the yarn exerts on the holder of a pinned or kinematic vertex [N] (zero if free).
   Eigen::Vector3d supportForce(std::uint32_t vertex) const { return support_force_[vertex]; }
@@ -65,7 +65,7 @@ class Simulator {
   Scene scene_;
   StepWorkspace work_;
   std::vector<Eigen::Vector3d> support_force_;
-  std::vector<BreakEvent> pending_events_;
+  std::vector<TearEvent> pending_events_;
   StepHealth health_;
   double time_ = 0.0;
   std::uint64_t step_count_ = 0;

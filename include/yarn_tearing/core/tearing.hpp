@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "yarn_tearing/core/break_event.hpp"
 #include "yarn_tearing/core/scene.hpp"
+#include "yarn_tearing/core/tear_event.hpp"
 
 namespace yarn_tearing {
 
@@ -18,7 +18,7 @@ class Tearing {
   /// Global ids of the edges to tear this step (ordered by edge id).
   const std::vector<std::uint32_t>& collect(const Scene& scene);
   /// Tears the collected edges and appends one event each (time = `time` [s]).
-  void apply(Scene& scene, double time, std::vector<BreakEvent>& events);
+  void apply(Scene& scene, double time, std::vector<TearEvent>& events);
 
  private:
   std::uint32_t findRoot(std::uint32_t v);

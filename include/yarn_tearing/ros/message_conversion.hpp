@@ -1,14 +1,14 @@
 #pragma once
 
 #include <ros/time.h>
+#include <yarn_tearing/BreakEvent.h>
 
 #include <string>
 
 #include "yarn_tearing/YarnStateArray.h"
-#include "yarn_tearing/core/break_event.hpp"
 #include "yarn_tearing/core/scene.hpp"
 #include "yarn_tearing/core/simulator.hpp"
-#include "yarn_tearing/ros/break_event_msg.hpp"
+#include "yarn_tearing/core/tear_event.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
@@ -21,8 +21,7 @@ ros::Time simulatedStamp(double simulated_time);
 YarnStateArray toYarnStateArray(const Simulator& simulator, const std::string& frame_id);
 
 /// One break event; header.stamp = simulated time of the break, position in `frame_id`.
-BreakEventMsg toBreakEventMsg(const BreakEvent& event, const Scene& scene,
-                              const std::string& frame_id);
+BreakEvent toBreakEventMsg(const TearEvent& event, const Scene& scene, const std::string& frame_id);
 
 }  // namespace ros_layer
 }  // namespace yarn_tearing

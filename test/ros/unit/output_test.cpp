@@ -124,7 +124,7 @@ TEST(MessageConversion, UsesPerYarnLocalIndices) {
 
 TEST(MessageConversion, BreakEventNamesTheYarn) {
   const Simulator simulator(SimulationParameters{}, twoYarns());
-  BreakEvent event;
+  TearEvent event;
   event.yarn = 1;
   event.edge = 1;
   event.vertex_a = 1;
@@ -132,7 +132,7 @@ TEST(MessageConversion, BreakEventNamesTheYarn) {
   event.position = Eigen::Vector3d(0.1, 0.0, -0.2);
   event.time = 2.5;
   event.tension = 9.4;
-  const BreakEventMsg msg = toBreakEventMsg(event, simulator.scene(), "world");
+  const BreakEvent msg = toBreakEventMsg(event, simulator.scene(), "world");
   EXPECT_EQ(msg.yarn, simulator.scene().yarns[1].name);
   EXPECT_EQ(msg.header.frame_id, "world");
   EXPECT_DOUBLE_EQ(msg.header.stamp.toSec(), 2.5);

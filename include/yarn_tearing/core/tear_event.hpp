@@ -5,8 +5,9 @@
 
 namespace yarn_tearing {
 
-/// One edge that tore, with the state it tore in.
-struct BreakEvent {
+/// One edge that tore, with the state it tore in (published as the yarn_tearing/BreakEvent
+/// message).
+struct TearEvent {
   std::uint32_t yarn = 0;                              ///< yarn index in the scene
   std::uint32_t edge = 0;                              ///< edge index within the yarn
   std::uint32_t vertex_a = 0;                          ///< first vertex within the yarn
