@@ -16,6 +16,11 @@ struct RampedYarn {
     s.direction = Eigen::Vector3d(1.0, 0.0, 0.0);
     return s;
   }
+  /// Sets a constant force [N] along +x on the last vertex.
+  void pullEnd(double force) {
+    const auto last = static_cast<std::uint32_t>(sim.scene().vertices.size() - 1);
+    sim.setAppliedForce(last, Eigen::Vector3d(force, 0.0, 0.0));
+  }
   /// Steps until the first break or `max_time` [s]; returns the events.
   std::vector<TearEvent> runUntilBreak(double max_time) {
     const auto last = static_cast<std::uint32_t>(sim.scene().vertices.size() - 1);
@@ -50,8 +55,7 @@ TEST(Breaking, HeldAt95PercentForTenSecondsDoesNotBreak) {
   const Material material = cottonLike();
   const double force = 0.95 * material.curve.breakingStress() * kPi * 1.0e-8;
   RampedYarn ramp(material, 0.0);
-  const auto last = static_cast<std::uint32_t>(ramp.sim.scene().vertices.size() - 1);
-  ramp.sim.setAppliedForce(last, Eigen::Vector3d(force, 0.0, 0.0));
+  ramp.pullEnd(force);
   std::size_t events = 0;
   while (ramp.sim.time() < 10.0) {
     ramp.sim.step();
@@ -95,8 +99,7 @@ TEST(Breaking, EachPieceTearsAtMostOnceAStep) {
   const Material material = cottonLike();
   const double force = 1000.0 * material.curve.breakingStress() * kPi * 1.0e-8;
   RampedYarn ramp(material, 0.0);
-  const auto last = static_cast<std::uint32_t>(ramp.sim.scene().vertices.size() - 1);
-  ramp.sim.setAppliedForce(last, Eigen::Vector3d(force, 0.0, 0.0));
+  ramp.pullEnd(force);
   ramp.sim.step();
   EXPECT_EQ(ramp.sim.takeBreakEvents().size(), 1u);
   for (int i = 0; i < 200; ++i) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "yarn_tearing/core/simulator.hpp"
@@ -10,22 +11,23 @@ namespace yarn_tearing::test {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kGravity = 9.81;  ///< [m/s^2]
 
+/// A fibre of density 1520 kg/m^3 with the given stress-strain points.
+inline Material fibre(const char* name, std::vector<CurvePoint> points) {
+  Material m;
+  m.name = name;
+  m.density = 1520.0;
+  m.curve = StressStrainCurve(std::move(points));
+  return m;
+}
+
 /// Cotton-like fibre: E = 7.6 GPa, yield at 1.5 % / 114 MPa, break at 7.1 % / 486 MPa.
 inline Material cottonLike() {
-  Material m;
-  m.name = "cotton_like";
-  m.density = 1520.0;
-  m.curve = StressStrainCurve({{0.0, 0.0}, {0.015, 1.14e8}, {0.071, 4.86e8}});
-  return m;
+  return fibre("cotton_like", {{0.0, 0.0}, {0.015, 1.14e8}, {0.071, 4.86e8}});
 }
 
 /// A weaker fibre (lower modulus and breaking point), as the left yarn of the paper's Figure 4.
 inline Material weakLike() {
-  Material m;
-  m.name = "weak_like";
-  m.density = 1520.0;
-  m.curve = StressStrainCurve({{0.0, 0.0}, {0.01, 4.0e7}, {0.05, 1.6e8}});
-  return m;
+  return fibre("weak_like", {{0.0, 0.0}, {0.01, 4.0e7}, {0.05, 1.6e8}});
 }
 
 /// 0.3 m, 25 vertices, r = 0.1 mm, hanging along -z from the origin, vertex 0 pinned.

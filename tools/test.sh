@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs what is needed (Debian 12, as root or with sudo), builds, and runs every test of
+# yarn_tearing; exits non-zero when any fails. Logs: build/test_logs/.
+#   1. clang-format check of every C++ file
+#   2. core GoogleTest suite, Release and AddressSanitizer + UndefinedBehaviorSanitizer
+#   3. catkin build, ROS-layer unit tests and rostests
+#   4. plot_bag tests (python unittest)
+set -euo pipefail
+
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+logs="${repo}/build/test_logs"
+mkdir -p "${logs}"
+
+"${repo}/tools/install_deps.sh"
+
+run_logged() {
+  local name="$1"
+  shift
+  echo "== ${name}"
+  "$@" 2>&1 | tee "${logs}/${name}.log"
+}
+
+run_logged format "${repo}/tools/check_format.sh"
+run_logged core "${repo}/tools/test_core.sh"
+run_logged ros "${repo}/tools/run_ros_tests.sh"
+run_logged plot /usr/bin/python3 -m unittest discover -s "${repo}/test/plot" -t "${repo}/test/plot"
+
+# One closing line over all suites (each suite above already failed the run if it failed).
+core_total=$(grep -ho "tests failed out of [0-9]*" "${logs}/core.log" | awk '{s += $5} END {print s + 0}')
+ros_total=$(grep -o "Summary: [0-9]* tests" "${logs}/ros.log" | tail -1 | awk '{print $2 + 0}')
+plot_total=$(grep -o "^Ran [0-9]* test" "${logs}/plot.log" | awk '{print $2 + 0}')
+echo "test: $((core_total + ros_total + plot_total)) passed, 0 failed"
