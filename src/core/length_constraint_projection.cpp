@@ -22,6 +22,9 @@ ProjectionResult LengthConstraintProjection::project(std::vector<Eigen::Vector3d
   limit_.resize(q);
   step_.resize(q);
   active_.resize(q);
+  candidate_.resize(q);
+  target_.resize(q);
+  product_.resize(q);
   multiplier_.assign(q, 0.0);
   if (parameters.projection_method == ProjectionMethod::kGaussSeidel) {
     return projectGaussSeidel(position, edges, parameters);
@@ -36,7 +39,8 @@ double LengthConstraintProjection::evaluate(const std::vector<Eigen::Vector3d>& 
     const std::uint32_t a = edges.vertex_a[e];
     const std::uint32_t b = edges.vertex_b[e];
     const bool movable = inverse_mass_[a] + inverse_mass_[b] > 0.0;
-    if (!edges.intact(e) || !movable) {
+    candidate_[e] = edges.intact(e) && movable ? 1 : 0;
+    if (!candidate_[e]) {
       active_[e] = 0;
       continue;
     }
@@ -53,6 +57,49 @@ double LengthConstraintProjection::evaluate(const std::vector<Eigen::Vector3d>& 
   return max_violation;
 }
 
+void LengthConstraintProjection::multiplyGram(const EdgeSet& edges,
+                                              const std::vector<double>& multiplier,
+                                              std::vector<double>& product) {
+  for (Eigen::Vector3d& p : vertex_sum_) p.setZero();
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (!candidate_[e] || multiplier[e] == 0.0) continue;
+    vertex_sum_[edges.vertex_a[e]] -= multiplier[e] * direction_[e];
+    vertex_sum_[edges.vertex_b[e]] += multiplier[e] * direction_[e];
+  }
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (!candidate_[e]) continue;
+    const std::uint32_t a = edges.vertex_a[e];
+    const std::uint32_t b = edges.vertex_b[e];
+    product[e] =
+        direction_[e].dot(inverse_mass_[b] * vertex_sum_[b] - inverse_mass_[a] * vertex_sum_[a]);
+  }
+}
+
+void LengthConstraintProjection::solveComplementarity(const EdgeSet& edges, EdgeGramSolver& gram,
+                                                      const GramSystem& system) {
+  // Block principal pivoting: guess the set of taut edges, solve them as equalities, move the
+  // edges whose force came out compressive out of the set and the slack edges that the solution
+  // would stretch into it, until nothing moves.
+  for (int pass = 0; pass < kMaxPivotingPasses; ++pass) {
+    for (std::size_t e = 0; e < edges.size(); ++e) step_[e] = active_[e] ? target_[e] : 0.0;
+    gram.solve(edges, system, step_);
+    multiplyGram(edges, step_, product_);
+    bool changed = false;
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      if (!candidate_[e]) continue;
+      const bool compressive = active_[e] && step_[e] < 0.0;
+      // A slack edge joins only when the solution would stretch it past the tolerance, so that
+      // edges right at their limit do not flip in and out on round-off.
+      const bool stretched = !active_[e] && target_[e] - product_[e] > slack_tolerance_ * limit_[e];
+      if (compressive || stretched) {
+        active_[e] = active_[e] ? 0 : 1;
+        changed = true;
+      }
+    }
+    if (!changed) return;
+  }
+}
+
 ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vector3d>& position,
                                                          const EdgeSet& edges,
                                                          const SimulationParameters& parameters,
@@ -62,27 +109,41 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
   system.vertex_weight = &inverse_mass_;
   system.active = &active_;
   system.diagonal_shift = &shift_;
+  slack_tolerance_ = 0.1 * parameters.constraint_tolerance;
+  vertex_sum_.resize(position.size());
   ProjectionResult result;
+  result.max_violation = evaluate(position, edges);
+  // Warm start: the edges that were taut at the end of the last step most likely still are.
+  was_taut_.resize(edges.size(), 0);
+  for (std::size_t e = 0; e < edges.size(); ++e) active_[e] |= candidate_[e] & was_taut_[e];
   for (;;) {
-    result.max_violation = evaluate(position, edges);
     result.converged = result.max_violation <= parameters.constraint_tolerance;
     if (result.converged || result.iterations >= parameters.max_projection_iterations) break;
-    for (std::size_t e = 0; e < edges.size(); ++e) step_[e] = active_[e] ? residual_[e] : 0.0;
-    gram.solve(edges, system, step_);
+    // Linearized at the current iterate x_k (directions J, Gram matrix K = J W J^T), moving the
+    // vertices by -W J^T (m - m_k) gives C(x_k) - K (m - m_k) - (c/dt^2) m <= 0 for every edge,
+    // with m >= 0 the total multipliers and each product zero: a linear complementarity
+    // problem in m, solved exactly. A taut edge may thus become slack (its pull is taken back)
+    // but never pushes.
+    multiplyGram(edges, multiplier_, product_);
     for (std::size_t e = 0; e < edges.size(); ++e) {
-      if (!active_[e]) continue;
-      const double dl = step_[e];
+      target_[e] = residual_[e] + shift_[e] * multiplier_[e] + product_[e];
+    }
+    solveComplementarity(edges, gram, system);
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      if (!candidate_[e]) continue;
+      const double total = std::max(step_[e], 0.0);
+      const double change = total - multiplier_[e];
+      multiplier_[e] = total;
+      if (change == 0.0) continue;
       const std::uint32_t a = edges.vertex_a[e];
       const std::uint32_t b = edges.vertex_b[e];
-      position[a] += (inverse_mass_[a] * dl) * direction_[e];
-      position[b] -= (inverse_mass_[b] * dl) * direction_[e];
-      // The full Newton step moves the vertices (clamping it would break the balance between
-      // redundant constraints); an edge whose force would turn compressive is released instead:
-      // it holds no force and leaves the active set unless stretched again.
-      multiplier_[e] = std::max(multiplier_[e] + dl, 0.0);
+      position[a] += (inverse_mass_[a] * change) * direction_[e];
+      position[b] -= (inverse_mass_[b] * change) * direction_[e];
     }
     ++result.iterations;
+    result.max_violation = evaluate(position, edges);
   }
+  for (std::size_t e = 0; e < edges.size(); ++e) was_taut_[e] = multiplier_[e] > 0.0 ? 1 : 0;
   return result;
 }
 

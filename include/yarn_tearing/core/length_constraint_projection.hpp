@@ -13,7 +13,7 @@ namespace yarn_tearing {
 
 /// Outcome of one projection.
 struct ProjectionResult {
-  int iterations = 0;          ///< Newton steps or Gauss–Seidel sweeps
+  int iterations = 0;          ///< iterations (direction updates) or Gauss–Seidel sweeps
   double max_violation = 0.0;  ///< max (length - limit) / limit over intact edges [-]
   bool converged = false;      ///< max_violation <= tolerance
 };
@@ -22,13 +22,17 @@ struct ProjectionResult {
 ///   |x_a - x_b| <= L (1 + s),   s = c T / L,
 /// with L the (plastic) rest length, c = L / (E A) the edge's elastic compliance [m/N] and T the
 /// force the constraint itself exerts (its multiplier / dt^2). The strain limit s is thus the
-/// elastic strain of the edge's current stress (paper §3.3), solved in the same Newton system
+/// elastic strain of the edge's current stress (paper §3.3), solved in the same system
 /// rather than lagged by a step: the lagged update oscillates and grows once the yarn's own
 /// elastic vibration is resolved by the time step (omega dt < 1, e.g. a heavy weight), while this
 /// one is stable at any dt and mass ratio and reduces to the hard constraint when E A is large.
-/// The projection is mass-weighted (Goldenthal et al. 2007 fast projection): Newton steps on the
-/// active set with a banded (chains) or sparse solve. Edges whose vertices are all pinned or
-/// kinematic cannot be corrected and are not counted.
+///
+/// The projection is mass-weighted, as the fast projection of Goldenthal et al. (2007): the
+/// vertices move by -W J^T (change of the multipliers), W the inverse masses. Each iteration
+/// linearizes at the current positions and solves the resulting linear complementarity problem
+/// in the total multipliers exactly (taut edges pull, slack ones carry nothing, none pushes) by
+/// block principal pivoting over a banded (chains) or sparse solve. Edges whose vertices are all
+/// pinned or kinematic cannot be corrected and are not counted.
 class LengthConstraintProjection {
  public:
   /// Projects `position` in place. `compliance` is c per edge [m/N]; masses and supports come
@@ -49,18 +53,31 @@ class LengthConstraintProjection {
   double evaluate(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
   ProjectionResult projectFast(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
                                const SimulationParameters& parameters, EdgeGramSolver& gram);
+  /// product = K multiplier, K = J W J^T over the candidate edges (matrix-free, any graph).
+  void multiplyGram(const EdgeSet& edges, const std::vector<double>& multiplier,
+                    std::vector<double>& product);
+  /// Solves the linear complementarity problem of one iteration: step_ = multipliers >= 0.
+  void solveComplementarity(const EdgeSet& edges, EdgeGramSolver& gram, const GramSystem& system);
   ProjectionResult projectGaussSeidel(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
                                       const SimulationParameters& parameters);
 
-  double time_step2_ = 1.0;                 ///< dt^2 [s^2]
-  std::vector<double> inverse_mass_;        ///< [1/kg]
-  std::vector<double> shift_;               ///< c / dt^2 per edge [1/kg]
-  std::vector<Eigen::Vector3d> direction_;  ///< unit edge directions
-  std::vector<double> residual_;            ///< length - L - c T [m]
-  std::vector<double> limit_;               ///< L + c T [m]
-  std::vector<double> multiplier_;          ///< accumulated multipliers T dt^2 [kg*m]
-  std::vector<double> step_;                ///< Newton step of the multipliers [kg*m]
-  std::vector<std::uint8_t> active_;        ///< edges in the active set
+  double time_step2_ = 1.0;                  ///< dt^2 [s^2]
+  std::vector<double> inverse_mass_;         ///< [1/kg]
+  std::vector<double> shift_;                ///< c / dt^2 per edge [1/kg]
+  std::vector<Eigen::Vector3d> direction_;   ///< unit edge directions
+  std::vector<double> residual_;             ///< length - L - c T [m]
+  std::vector<double> limit_;                ///< L + c T [m]
+  std::vector<double> multiplier_;           ///< accumulated multipliers T dt^2 [kg*m]
+  std::vector<double> step_;                 ///< candidate multipliers of a pivoting pass [kg*m]
+  std::vector<std::uint8_t> active_;         ///< edges in the active set
+  std::vector<std::uint8_t> candidate_;      ///< intact edges with a movable vertex
+  std::vector<std::uint8_t> was_taut_;       ///< edges taut at the end of the last projection
+  std::vector<double> target_;               ///< right-hand side of the complementarity problem
+  std::vector<double> product_;              ///< K times a multiplier vector [m]
+  std::vector<Eigen::Vector3d> predicted_;   ///< positions before the projection [m]
+  std::vector<Eigen::Vector3d> vertex_sum_;  ///< per-vertex sum of multiplier * direction
+  double slack_tolerance_ = 0.0;  ///< relative stretch a slack edge may show before it joins
+  static constexpr int kMaxPivotingPasses = 30;  ///< active-set passes per iteration
 };
 
 }  // namespace yarn_tearing
