@@ -10,39 +10,54 @@ from . import style
 
 MPA = 1.0e-6  # Pa -> MPa
 PERCENT = 100.0
+SCATTER_SHOWN = 1.0e-3  # [-] weakest-edge line drawn if it differs this much from σ_b·πr²
+WEAKEST_DASHES = (0, (8, 3))  # longer than the "--" of the breaking-force line
 
 
 def make_tension_strain(data, strengths, path) -> dict:
     """Max tension [N] and max strain [%] over intact edges vs time, per yarn.
 
     Break instants (BreakEvent header.stamp) are dotted vertical lines, the
-    breaking force sigma_b pi r^2 a dashed horizontal line per yarn.  Returns
-    ``{"break_times": [...]}``, the x positions [s] of the drawn break lines.
+    breaking force sigma_b pi r^2 a dashed horizontal line per yarn, and where
+    strength scatter makes the weakest edge's breaking force (material
+    ``weakest_breaking_force``) differ from it by more than SCATTER_SHOWN, a
+    long-dashed line there.  Returns ``{"break_times": [...], "weakest_lines":
+    {yarn: y [N]}}``, the x positions [s] of the drawn break lines and the
+    heights of the drawn weakest-edge lines.
     """
     fig = style.new_figure(figsize=(11.5, 6.5), layout="constrained")
     ax_t, ax_e = fig.subplots(2, 1, sharex=True)
     col = style.colours(data.yarns)
+    known = {n: strengths[n] for n in data.yarns if strengths.get(n) is not None}
+    forces = {n: st.breaking_force for n, st in known.items() if st.breaking_force is not None}
+    strains = {n: st.material.breaking_strain * PERCENT for n, st in known.items()
+               if st.material is not None and st.material.breaking_strain}
+    weakest = {n: w for n, w in ((n, _weakest_force(st)) for n, st in known.items())
+               if w is not None}
+    force_ls, strain_ls = dash_styles(forces), dash_styles(strains)
+    weakest_lines = {}
     for name, y in data.yarns.items():
         ok = y.intact()
         ax_t.plot(y.t, style.masked_max(y.tensions, ok), color=col[name],
                   label="%s: max tension" % name)
         ax_e.plot(y.t, style.masked_max(y.strains, ok) * PERCENT, color=col[name],
                   label="%s: max strain" % name)
-        st = strengths.get(name)
-        if st is not None and st.breaking_force is not None:
-            ax_t.axhline(st.breaking_force, color=col[name], ls="--", lw=1.2,
+        if name in forces:
+            ax_t.axhline(forces[name], color=col[name], ls=force_ls[name], lw=1.2,
                          label="%s: breaking force σ$_b$·πr² = %.3g N (σ$_b$ from %s)"
-                         % (name, st.breaking_force, st.source))
-        if st is not None and st.material is not None and st.material.breaking_strain:
-            ax_e.axhline(st.material.breaking_strain * PERCENT, color=col[name], ls="--",
-                         lw=1.2, label="%s: breaking strain (%s)" % (name, st.source))
-    forces = [st.breaking_force for st in strengths.values() if st.breaking_force]
-    if forces:  # axhline does not autoscale
-        ax_t.set_ylim(top=max(ax_t.get_ylim()[1], 1.08 * max(forces)))
-    strains = [st.material.breaking_strain * PERCENT for st in strengths.values()
-               if st.material is not None and st.material.breaking_strain]
-    if strains:
-        ax_e.set_ylim(top=max(ax_e.get_ylim()[1], 1.08 * max(strains)))
+                         % (name, forces[name], known[name].source))
+        if name in weakest:
+            line = ax_t.axhline(weakest[name], color=col[name], ls=WEAKEST_DASHES, lw=1.2,
+                                label="%s: weakest edge (strength scatter): %.3g N"
+                                % (name, weakest[name]))
+            weakest_lines[name] = float(line.get_ydata()[0])
+        if name in strains:
+            ax_e.axhline(strains[name], color=col[name], ls=strain_ls[name], lw=1.2,
+                         label="%s: breaking strain (%s)" % (name, known[name].source))
+    for ax, tops in ((ax_t, list(forces.values()) + list(weakest.values())),
+                     (ax_e, list(strains.values()))):
+        if tops:  # axhline does not autoscale
+            ax.set_ylim(top=max(ax.get_ylim()[1], 1.08 * max(tops)))
     style.draw_breaks(ax_t, data.breaks, col)
     style.draw_breaks(ax_e, data.breaks, col, label=False)
     ax_t.set_ylabel("max tension over edges [N]")
@@ -53,7 +68,28 @@ def make_tension_strain(data, strengths, path) -> dict:
         ax.grid(alpha=0.3)
         style.legend(ax, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     style.save(fig, path)
-    return {"break_times": style.drawn_breaks(ax_t)}
+    return {"break_times": style.drawn_breaks(ax_t), "weakest_lines": weakest_lines}
+
+
+def _weakest_force(strength):
+    """The material's weakest-edge breaking force [N] if it is known and differs from
+    sigma_b pi r^2 by more than SCATTER_SHOWN (or that is unknown), else None."""
+    weakest = strength.material.weakest_breaking_force if strength.material else None
+    nominal = strength.breaking_force
+    if weakest is None or (nominal and abs(weakest - nominal) <= SCATTER_SHOWN * nominal):
+        return None
+    return weakest
+
+
+def dash_styles(values: dict, on: float = 5.0) -> dict:
+    """Yarn -> linestyle for horizontal lines at ``values`` (yarn -> y): "--" for a
+    value of one yarn only; equal values get interleaved dashes so each colour shows."""
+    out = {}
+    for name, v in values.items():
+        same = [n for n, w in values.items() if np.isclose(w, v, rtol=1e-9, atol=0.0)]
+        n, k = len(same), same.index(name)
+        out[name] = "--" if n == 1 else ((n - k) % n * on, (on, (n - 1) * on))
+    return out
 
 
 def _peak_edge(y, breaks):

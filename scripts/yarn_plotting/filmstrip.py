@@ -141,16 +141,17 @@ def make_filmstrip(data, strengths, times, path, cmap="turbo") -> dict:
                         ha="center", va="bottom", fontsize=9, fontweight="bold")
         _frame_axes(ax, lay, "t = %.3f s" % t)
     _scale_bar(axes[-1], lay.span)
-    axes[0].legend(handles=[
+    # in the title band, right (the title is left-aligned): inside a panel it hid yarn ends
+    fig.legend(handles=[
         Line2D([], [], ls="", marker="s", color="k", ms=5, label="support"),
         Line2D([], [], ls="", marker="x", color="red", ms=8, mew=2, label="tear")],
-        loc="lower left", fontsize=7, frameon=False, handletextpad=0.2)
+        loc="upper right", ncol=2, fontsize=8, frameon=False, handletextpad=0.2)
     known = all(strengths.get(n) is not None and strengths[n].breaking_stress for n in names)
     fig.colorbar(ScalarMappable(norm, cm), ax=list(axes), shrink=0.85 if lay.tall else 0.5,
                  pad=0.02, label="stress / breaking stress  σ / σ$_b$" if known else
                  "stress / σ$_b$ (or / peak stress if σ$_b$ unknown)")
     fig.suptitle("Yarns over time, coloured by stress (projection on the %s–%s plane)"
-                 % (AXES[h], AXES[v]))
+                 % (AXES[h], AXES[v]), x=0.01, ha="left")
     style.save(fig, path)
     return {"times": [float(t) for t in times], "plane": AXES[h] + AXES[v],
             "offsets": {n: float(s.sum()) for n, s in lay.shift.items()}}  # [m], across

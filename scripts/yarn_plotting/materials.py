@@ -9,6 +9,8 @@ A material is a mapping with any of these keys (SI units)::
     young_modulus: 2.0e10      # [Pa]  gives yield_strain = yield_stress / E
     area: 3.1e-8               # [m^2] } used only if the bag has no edge with
     radius: 1.0e-4             # [m]   } nonzero stress and no BreakEvent
+    weakest_breaking_force: 4.2  # [N] tension at which the weakest edge tears
+                                 # (strength scatter; the node publishes it)
     curve: [[0, 0], [0.01, 2.0e8], [0.05, 3.0e8]]   # [[strain, stress Pa], ...]
 
 ``stress_strain`` is accepted for ``curve`` (config/materials.yaml); without
@@ -44,6 +46,7 @@ _ALIASES = {
     "young_modulus": ("young_modulus", "youngs_modulus", "E"),
     "radius": ("radius",),
     "area": ("area",),
+    "weakest_breaking_force": ("weakest_breaking_force",),
 }
 
 
@@ -57,6 +60,7 @@ class Material:
     yield_strain: Optional[float] = None     # [-]
     radius: Optional[float] = None           # [m]
     area: Optional[float] = None             # [m^2] load-bearing cross-section
+    weakest_breaking_force: Optional[float] = None  # [N] tears the weakest edge
     curve: Optional[np.ndarray] = None       # (N, 2): strain [-], stress [Pa]
 
     @classmethod

@@ -1,7 +1,10 @@
 #include "yarn_tearing/ros/materials_description.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 namespace yarn_tearing {
@@ -35,6 +38,16 @@ std::string yamlQuoted(const std::string& text) {
   return quoted + "\"";
 }
 
+double weakestBreakingForce(const Scene& scene, const Yarn& yarn) {
+  const StressStrainCurve& curve = yarn.material.curve;
+  double weakest = std::numeric_limits<double>::infinity();
+  for (std::uint32_t e = yarn.first_edge; e < yarn.first_edge + yarn.num_edges; ++e) {
+    const double strain = curve.breakingStrain() * scene.edges.strength_factor.at(e);
+    weakest = std::min(weakest, curve.stressAtStrain(strain) * scene.edges.area.at(e));
+  }
+  return weakest;
+}
+
 std::string describeMaterialsYaml(const Scene& scene) {
   std::ostringstream yaml;
   for (const Yarn& yarn : scene.yarns) {
@@ -47,6 +60,7 @@ std::string describeMaterialsYaml(const Scene& scene) {
     yaml << "  yield_strain: " << yamlFloat(curve.yieldStrain()) << "\n";
     yaml << "  youngs_modulus: " << yamlFloat(curve.youngsModulus()) << "\n";
     yaml << "  area: " << yamlFloat(scene.edges.area.at(yarn.first_edge)) << "\n";
+    yaml << "  weakest_breaking_force: " << yamlFloat(weakestBreakingForce(scene, yarn)) << "\n";
     yaml << "  radius: " << yamlFloat(yarn.radius) << "\n";
     yaml << "  density: " << yamlFloat(yarn.material.density) << "\n";
     yaml << "  plastic_viscosity: " << yamlFloat(yarn.material.plastic_viscosity) << "\n";

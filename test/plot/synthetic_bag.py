@@ -39,6 +39,9 @@ MATERIALS = {           # SI units
     "strong": {"breaking_stress": 6.0e8, "breaking_strain": 0.08, "yield_stress": 3.0e8,
                "yield_strain": 0.015, "curve": [[0, 0], [0.015, 3.0e8], [0.08, 6.0e8]]},
 }
+# [N] yarn_materials weakest_breaking_force: weak's weakest edge is 10 % weaker than
+# sigma_b pi r^2 (strength scatter), strong's within 0.1 % (no line drawn for it)
+WEAKEST_FORCE = {"weak": 0.9 * 3.0e8 * AREA, "strong": 1.0002 * 6.0e8 * AREA}
 TEAR_EDGE = {"weak": 7, "strong": 4}
 X0 = {"weak": 0.0, "strong": 0.05}
 
@@ -132,8 +135,10 @@ def node_metadata():
         out.append('"%s":\n  material: "%s_preset"\n' % (name, name))
         out += ["  %s: %s\n" % (k, f(m[k])) for k in
                 ("breaking_stress", "breaking_strain", "yield_stress", "yield_strain")]
-        out.append("  youngs_modulus: %s\n  area: %s\n  radius: %s\n  density: 1.5e+03\n"
-                   % (f(m["curve"][1][1] / m["curve"][1][0]), f(AREA), f(RADIUS)))
+        out.append("  youngs_modulus: %s\n  area: %s\n  weakest_breaking_force: %s\n"
+                   "  radius: %s\n  density: 1.5e+03\n"
+                   % (f(m["curve"][1][1] / m["curve"][1][0]), f(AREA), f(WEAKEST_FORCE[name]),
+                      f(RADIUS)))
         out.append("  curve: [%s]\n" % ", ".join("[%s, %s]" % (f(a), f(b))
                                                  for a, b in m["curve"]))
     return "".join(out)

@@ -24,6 +24,7 @@ sys.path.insert(0, SCRIPTS)
 
 import synthetic_bag as sb  # noqa: E402
 from yarn_plotting import BagError, FIGURES, frames, make_all, read_bag  # noqa: E402
+from yarn_plotting.curves import dash_styles  # noqa: E402
 from yarn_plotting.filmstrip import projection_axes  # noqa: E402
 from yarn_plotting.materials import Material, load_presets  # noqa: E402
 
@@ -112,6 +113,15 @@ class PlotBagTest(unittest.TestCase):
                                    sb.MATERIALS[name]["yield_strain"])
             np.testing.assert_allclose(st[name].material.curve, sb.MATERIALS[name]["curve"])
 
+    def test_weakest_edge_line_only_where_strength_scatter_shows(self):
+        lines = self.result["info"]["tension_strain"]["weakest_lines"]
+        self.assertEqual(set(lines), {"weak"})  # strong's is within 0.1 % of sigma_b pi r^2
+        self.assertAlmostEqual(lines["weak"] / sb.WEAKEST_FORCE["weak"], 1.0, places=6)
+        self.assertLess(lines["weak"], self.result["strengths"]["weak"].breaking_force)
+        styles = dash_styles({"weak": 5.0, "released": 5.0, "strong": 20.0})
+        self.assertEqual(styles["strong"], "--")
+        self.assertNotEqual(styles["weak"], styles["released"])  # interleaved, both visible
+
     def test_without_metadata_sigma_b_from_break_event(self):
         bag = self.bag_path("nometa.bag", with_metadata=False)
         res = make_all(bag, os.path.join(self.tmp, "nometa"))
@@ -122,6 +132,7 @@ class PlotBagTest(unittest.TestCase):
             self.assertIsNone(st.material)
             self.assertAlmostEqual(st.breaking_force / (sb.MATERIALS[name]["breaking_stress"]
                                                         * sb.AREA), 1.0, places=9)
+        self.assertEqual(res["info"]["tension_strain"]["weakest_lines"], {})
 
     def test_without_breaks_or_material(self):
         bag = self.bag_path("nobreaks.bag", with_metadata=False, with_breaks=False)

@@ -13,10 +13,16 @@ namespace ros_layer {
 ///     breaking_stress: [Pa]    breaking_strain: [-]
 ///     yield_stress: [Pa]       yield_strain: [-]
 ///     youngs_modulus: [Pa]     area: [m^2] (load-bearing)   radius: [m]
+///     weakest_breaking_force: [N] (see weakestBreakingForce)
 ///     density: [kg/m^3]        plastic_viscosity: [Pa*s]
 ///     curve: [[strain, stress [Pa]], ...]
 /// Every number is written so that YAML 1.1 readers (PyYAML) parse it as a float.
 std::string describeMaterialsYaml(const Scene& scene);
+
+/// Tension [N] at which `yarn`'s weakest edge tears: the minimum over its edges e of
+/// stressAtStrain(breakingStrain * strength_factor_e) * area_e. Equals sigma_b * area without
+/// strength scatter, is lower with it.
+double weakestBreakingForce(const Scene& scene, const Yarn& yarn);
 
 /// `x` as a YAML float, e.g. 3.0e+08, 0.01, 0.0 (PyYAML needs a '.' before an exponent).
 std::string yamlFloat(double x);

@@ -51,6 +51,24 @@ TEST(MaterialsDescription, DescribesEveryYarn) {
   EXPECT_NE(yaml.find("curve: [[0.0, 0.0], "), std::string::npos) << yaml;
 }
 
+TEST(MaterialsDescription, WeakestBreakingForceFollowsTheStrengthScatter) {
+  std::vector<YarnSpec> specs = twoYarns();
+  const Simulator uniform(SimulationParameters{}, specs);
+  const Yarn& a = uniform.scene().yarns[0];
+  const double nominal = a.material.curve.breakingStress() * uniform.scene().edges.area[0];
+  EXPECT_NEAR(weakestBreakingForce(uniform.scene(), a), nominal, 1.0e-12 * nominal);
+
+  specs[0].num_vertices = 20;
+  specs[0].strength_scatter.weibull_modulus = 10.0;
+  const Simulator scattered(SimulationParameters{}, specs);
+  const double weakest = weakestBreakingForce(scattered.scene(), scattered.scene().yarns[0]);
+  EXPECT_LT(weakest, 0.999 * nominal);
+  EXPECT_GT(weakest, 0.0);
+  EXPECT_NE(describeMaterialsYaml(scattered.scene())
+                .find("weakest_breaking_force: " + yamlFloat(weakest) + "\n"),
+            std::string::npos);
+}
+
 TEST(StressColor, RunsFromBlueToRed) {
   const auto expect_rgb = [](const std_msgs::ColorRGBA& c, float r, float g, float b) {
     EXPECT_FLOAT_EQ(c.r, r);

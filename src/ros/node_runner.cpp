@@ -1,0 +1,40 @@
+#include "yarn_tearing/ros/node_runner.hpp"
+
+#include <ros/ros.h>
+
+#include <exception>
+#include <memory>
+
+#include "yarn_tearing/ros/simulation_config.hpp"
+#include "yarn_tearing/ros/yarn_tearing_node.hpp"
+
+namespace yarn_tearing {
+namespace ros_layer {
+namespace {
+constexpr double kFlushDelay = 0.5;  ///< [s] lets a fatal message reach /rosout before exiting
+}  // namespace
+
+int runYarnTearingNode(int argc, char** argv) {
+  ros::init(argc, argv, "yarn_tearing_node");
+  ros::NodeHandle nh;
+  ros::NodeHandle private_nh("~");
+  std::unique_ptr<YarnTearingNode> node;
+  try {
+    node = std::make_unique<YarnTearingNode>(nh, private_nh, loadSimulationConfig(private_nh));
+  } catch (const std::exception& e) {
+    ROS_FATAL("yarn_tearing_node: invalid configuration: %s", e.what());
+    ros::WallDuration(kFlushDelay).sleep();
+    return kExitInvalidConfiguration;
+  }
+  try {
+    node->run();
+  } catch (const std::exception& e) {
+    ROS_FATAL("yarn_tearing_node: simulation stopped: %s", e.what());
+    ros::WallDuration(kFlushDelay).sleep();
+    return kExitSimulationFailed;
+  }
+  return kExitOk;
+}
+
+}  // namespace ros_layer
+}  // namespace yarn_tearing
