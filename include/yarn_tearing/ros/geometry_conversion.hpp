@@ -8,22 +8,24 @@
 namespace yarn_tearing {
 namespace ros_layer {
 
+/// Eigen vector -> any message with x, y, z fields (Point, Vector3), same unit.
+template <typename Message>
+Message toXyzMessage(const Eigen::Vector3d& v) {
+  Message message;
+  message.x = v.x();
+  message.y = v.y();
+  message.z = v.z();
+  return message;
+}
+
 /// Eigen position [m] -> geometry_msgs::Point [m].
 inline geometry_msgs::Point toPoint(const Eigen::Vector3d& p) {
-  geometry_msgs::Point point;
-  point.x = p.x();
-  point.y = p.y();
-  point.z = p.z();
-  return point;
+  return toXyzMessage<geometry_msgs::Point>(p);
 }
 
 /// Eigen vector -> geometry_msgs::Vector3, same unit.
 inline geometry_msgs::Vector3 toVector3(const Eigen::Vector3d& v) {
-  geometry_msgs::Vector3 vector;
-  vector.x = v.x();
-  vector.y = v.y();
-  vector.z = v.z();
-  return vector;
+  return toXyzMessage<geometry_msgs::Vector3>(v);
 }
 
 /// geometry_msgs::Vector3 -> Eigen vector, same unit.
