@@ -110,7 +110,9 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
   system.active = &active_;
   system.diagonal_shift = &shift_;
   slack_tolerance_ = 0.1 * parameters.constraint_tolerance;
+  newton_taut_.resize(edges.size());
   vertex_sum_.resize(position.size());
+  predicted_ = position;
   ProjectionResult result;
   result.max_violation = evaluate(position, edges);
   // Warm start: the edges that were taut at the end of the last step most likely still are.
@@ -119,26 +121,36 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
   for (;;) {
     result.converged = result.max_violation <= parameters.constraint_tolerance;
     if (result.converged || result.iterations >= parameters.max_projection_iterations) break;
-    // Linearized at the current iterate x_k (directions J, Gram matrix K = J W J^T), moving the
-    // vertices by -W J^T (m - m_k) gives C(x_k) - K (m - m_k) - (c/dt^2) m <= 0 for every edge,
-    // with m >= 0 the total multipliers and each product zero: a linear complementarity
-    // problem in m, solved exactly. A taut edge may thus become slack (its pull is taken back)
-    // but never pushes.
-    multiplyGram(edges, multiplier_, product_);
-    for (std::size_t e = 0; e < edges.size(); ++e) {
-      target_[e] = residual_[e] + shift_[e] * multiplier_[e] + product_[e];
-    }
-    solveComplementarity(edges, gram, system);
-    for (std::size_t e = 0; e < edges.size(); ++e) {
-      if (!candidate_[e]) continue;
-      const double total = std::max(step_[e], 0.0);
-      const double change = total - multiplier_[e];
-      multiplier_[e] = total;
-      if (change == 0.0) continue;
-      const std::uint32_t a = edges.vertex_a[e];
-      const std::uint32_t b = edges.vertex_b[e];
-      position[a] += (inverse_mass_[a] * change) * direction_[e];
-      position[b] -= (inverse_mass_[b] * change) * direction_[e];
+    if (result.iterations >= kFastIterations) {
+      // The fast iterations stall (a light yarn swung hard by a heavy end): finish with Newton
+      // steps that include the geometric stiffness.
+      for (std::size_t e = 0; e < edges.size(); ++e) {
+        newton_taut_[e] = candidate_[e] && (multiplier_[e] > 0.0 || residual_[e] > 0.0);
+      }
+      newton_.apply(predicted_, inverse_mass_, edges, shift_, candidate_, newton_taut_, position,
+                    multiplier_);
+    } else {
+      // Linearized at the current iterate x_k (directions J, Gram matrix K = J W J^T), moving the
+      // vertices by -W J^T (m - m_k) gives C(x_k) - K (m - m_k) - (c/dt^2) m <= 0 for every edge,
+      // with m >= 0 the total multipliers and each product zero: a linear complementarity
+      // problem in m, solved exactly. A taut edge may thus become slack (its pull is taken back)
+      // but never pushes.
+      multiplyGram(edges, multiplier_, product_);
+      for (std::size_t e = 0; e < edges.size(); ++e) {
+        target_[e] = residual_[e] + shift_[e] * multiplier_[e] + product_[e];
+      }
+      solveComplementarity(edges, gram, system);
+      for (std::size_t e = 0; e < edges.size(); ++e) {
+        if (!candidate_[e]) continue;
+        const double total = std::max(step_[e], 0.0);
+        const double change = total - multiplier_[e];
+        multiplier_[e] = total;
+        if (change == 0.0) continue;
+        const std::uint32_t a = edges.vertex_a[e];
+        const std::uint32_t b = edges.vertex_b[e];
+        position[a] += (inverse_mass_[a] * change) * direction_[e];
+        position[b] -= (inverse_mass_[b] * change) * direction_[e];
+      }
     }
     ++result.iterations;
     result.max_violation = evaluate(position, edges);

@@ -7,6 +7,7 @@
 #include "yarn_tearing/core/edge_gram_solver.hpp"
 #include "yarn_tearing/core/edge_set.hpp"
 #include "yarn_tearing/core/simulation_parameters.hpp"
+#include "yarn_tearing/core/stiff_newton_step.hpp"
 #include "yarn_tearing/core/vertex_set.hpp"
 
 namespace yarn_tearing {
@@ -75,6 +76,9 @@ class LengthConstraintProjection {
   std::vector<double> target_;               ///< right-hand side of the complementarity problem
   std::vector<double> product_;              ///< K times a multiplier vector [m]
   std::vector<Eigen::Vector3d> predicted_;   ///< positions before the projection [m]
+  StiffNewtonStep newton_;                   ///< fallback when the fast iterations stall
+  std::vector<std::uint8_t> newton_taut_;    ///< edges the Newton step takes as equalities
+  static constexpr int kFastIterations = 6;  ///< fast iterations before Newton takes over
   std::vector<Eigen::Vector3d> vertex_sum_;  ///< per-vertex sum of multiplier * direction
   double slack_tolerance_ = 0.0;  ///< relative stretch a slack edge may show before it joins
   static constexpr int kMaxPivotingPasses = 30;  ///< active-set passes per iteration
