@@ -1,7 +1,10 @@
 // One full step, and each stage on its own, for hanging yarns of 25 to 10,000 vertices.
-// Run: build/yarn_tearing_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// Run (README, Performance):
+//   build/core/yarn_tearing_bench --benchmark_repetitions=5
+//     --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include "yarn_tearing/core/explicit_forces.hpp"
 #include "yarn_tearing/core/length_constraint_projection.hpp"
 #include "yarn_tearing/core/material_response.hpp"
 #include "yarn_tearing/core/simulator.hpp"
@@ -45,6 +48,21 @@ void BM_StepBouncing(benchmark::State& state) {
   Simulator sim = hangingYarn(static_cast<int>(state.range(0)), false);
   for (auto _ : state) {
     sim.step();
+    benchmark::ClobberMemory();
+  }
+  state.SetComplexityN(state.range(0));
+}
+
+/// Stages 1 and 2 (forces with the soft springs, then symplectic Euler) on the settled state. The
+/// vertices go on moving under them alone, which changes nothing in their cost.
+void BM_StageForcesAndPrediction(benchmark::State& state) {
+  Simulator sim = settledYarn(static_cast<int>(state.range(0)));
+  Scene scene = sim.scene();
+  std::vector<Eigen::Vector3d> force(scene.vertices.size());
+  const double dt = sim.parameters().time_step;
+  for (auto _ : state) {
+    accumulateExplicitForces(sim.parameters(), scene.vertices, scene.edges, force);
+    predictPositions(force, dt, scene.vertices);
     benchmark::ClobberMemory();
   }
   state.SetComplexityN(state.range(0));
@@ -114,6 +132,7 @@ void BM_StageMaterialAndTearing(benchmark::State& state) {
 
 BENCHMARK(BM_Step)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StepBouncing)->YARN_SIZES->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StageForcesAndPrediction)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StageProjection)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StageTensionEstimate)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StageMaterialAndTearing)->YARN_SIZES->Unit(benchmark::kMicrosecond);

@@ -1,25 +1,14 @@
 #include "yarn_tearing/core/simulator.hpp"
 
-#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "yarn_tearing/core/explicit_forces.hpp"
 #include "yarn_tearing/core/material_response.hpp"
 
 namespace yarn_tearing {
 namespace {
-
-/// Soft-spring constant of an edge [N/m]: ratio * (lighter free vertex mass) / dt^2.
-double softSpringConstant(const VertexSet& vertices, std::uint32_t a, std::uint32_t b,
-                          const SimulationParameters& p) {
-  double lighter = 0.0;
-  if (!vertices.isSupport(a)) lighter = vertices.mass[a];
-  if (!vertices.isSupport(b)) {
-    lighter = lighter > 0.0 ? std::min(lighter, vertices.mass[b]) : vertices.mass[b];
-  }
-  return p.soft_spring_ratio * lighter / (p.time_step * p.time_step);
-}
 
 void requireVertex(const Scene& scene, std::uint32_t vertex) {
   if (vertex >= scene.vertices.size()) {
@@ -94,49 +83,13 @@ void Simulator::step() {
 }
 
 void Simulator::accumulateForces() {
-  VertexSet& vertices = scene_.vertices;
-  EdgeSet& edges = scene_.edges;
-  for (std::size_t v = 0; v < vertices.size(); ++v) {
-    work_.force[v] = vertices.mass[v] * parameters_.gravity + vertices.applied_force[v] -
-                     parameters_.air_damping * vertices.damping_length[v] * vertices.velocity[v];
-  }
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    edges.spring_tension[e] = 0.0;
-    if (!edges.intact(e)) continue;
-    const std::uint32_t a = edges.vertex_a[e];
-    const std::uint32_t b = edges.vertex_b[e];
-    const Eigen::Vector3d d = vertices.position[b] - vertices.position[a];
-    const double length = d.norm();
-    const double stretch = length - edges.rest_length[e];
-    if (!(stretch > 0.0)) continue;  // yarns do not resist compression
-    const double tension = softSpringConstant(vertices, a, b, parameters_) * stretch;
-    edges.spring_tension[e] = tension;
-    const Eigen::Vector3d f = (tension / length) * d;
-    work_.force[a] += f;
-    work_.force[b] -= f;
-  }
+  accumulateExplicitForces(parameters_, scene_.vertices, scene_.edges, work_.force);
 }
 
 void Simulator::predictPositions() {
-  VertexSet& vertices = scene_.vertices;
-  const double dt = parameters_.time_step;
-  work_.start_position = vertices.position;
-  work_.start_velocity = vertices.velocity;
-  for (std::size_t v = 0; v < vertices.size(); ++v) {
-    switch (vertices.motion[v]) {
-      case VertexMotion::kFree:
-        vertices.velocity[v] += (dt / vertices.mass[v]) * work_.force[v];
-        vertices.position[v] += dt * vertices.velocity[v];
-        break;
-      case VertexMotion::kPinned:
-        vertices.velocity[v].setZero();
-        break;
-      case VertexMotion::kKinematic:
-        vertices.velocity[v] = (vertices.kinematic_target[v] - vertices.position[v]) / dt;
-        vertices.position[v] = vertices.kinematic_target[v];
-        break;
-    }
-  }
+  work_.start_position = scene_.vertices.position;
+  work_.start_velocity = scene_.vertices.velocity;
+  yarn_tearing::predictPositions(work_.force, parameters_.time_step, scene_.vertices);
 }
 
 void Simulator::projectLengthConstraints() {
@@ -238,7 +191,7 @@ void Simulator::releaseVertex(std::uint32_t vertex) {
   if (was_pinned) scene_.vertices.velocity[vertex].setZero();
 }
 
-std::vector<TearEvent> Simulator::takeBreakEvents() {
+std::vector<TearEvent> Simulator::takeTearEvents() {
   std::vector<TearEvent> events;
   events.swap(pending_events_);
   return events;

@@ -137,7 +137,7 @@ void YarnTearingNode::stepOnce(double fraction) {
 }
 
 void YarnTearingNode::publishBreakEvents() {
-  for (const TearEvent& event : simulator_.takeBreakEvents()) {
+  for (const TearEvent& event : simulator_.takeTearEvents()) {
     const BreakEvent msg = toBreakEventMsg(event, simulator_.scene(), config_.node.frame_id);
     breaks_pub_.publish(msg);
     markers_.addBreak(event.yarn, event.position);

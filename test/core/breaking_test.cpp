@@ -28,7 +28,7 @@ struct RampedYarn {
       sim.setAppliedForce(
           last, Eigen::Vector3d(rate * (sim.time() + sim.parameters().time_step), 0.0, 0.0));
       sim.step();
-      std::vector<TearEvent> events = sim.takeBreakEvents();
+      std::vector<TearEvent> events = sim.takeTearEvents();
       if (!events.empty()) return events;
     }
     return {};
@@ -59,7 +59,7 @@ TEST(Breaking, HeldAt95PercentForTenSecondsDoesNotBreak) {
   std::size_t events = 0;
   while (ramp.sim.time() < 10.0) {
     ramp.sim.step();
-    events += ramp.sim.takeBreakEvents().size();
+    events += ramp.sim.takeTearEvents().size();
   }
   EXPECT_EQ(events, 0u);
   EXPECT_NEAR(ramp.sim.scene().edges.tension[10], force, 0.005 * force);
@@ -82,7 +82,7 @@ TEST(Breaking, WeakerYarnBreaksFirstUnderTheSameForce) {
     sim.setAppliedForce(weak_end, f);
     sim.setAppliedForce(strong_end, f);
     sim.step();
-    for (const TearEvent& e : sim.takeBreakEvents()) all.push_back(e);
+    for (const TearEvent& e : sim.takeTearEvents()) all.push_back(e);
     if (all.size() >= 2) break;
   }
   ASSERT_GE(all.size(), 2u);
@@ -101,7 +101,7 @@ TEST(Breaking, EachPieceTearsAtMostOnceAStep) {
   RampedYarn ramp(material, 0.0);
   ramp.pullEnd(force);
   ramp.sim.step();
-  EXPECT_EQ(ramp.sim.takeBreakEvents().size(), 1u);
+  EXPECT_EQ(ramp.sim.takeTearEvents().size(), 1u);
   for (int i = 0; i < 200; ++i) {
     ramp.sim.step();
     ASSERT_TRUE(allFinite(ramp.sim)) << "step " << i;
@@ -121,7 +121,7 @@ TEST(Breaking, LargeTimeStepStaysFiniteAndTearsCleanly) {
   for (int i = 0; i < 600; ++i) {
     sim.setAppliedForce(last, Eigen::Vector3d(0.0, 0.0, -2.0 * sim.time()));
     sim.step();
-    breaks += sim.takeBreakEvents().size();
+    breaks += sim.takeTearEvents().size();
     ASSERT_TRUE(allFinite(sim)) << "step " << i;
     EXPECT_LE(sim.lastHealth().max_constraint_violation, 1e-6) << "step " << i;
   }

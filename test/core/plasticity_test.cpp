@@ -24,7 +24,7 @@ struct LoadedYarn {
       const double s = std::min(1.0, (sim.time() - start + sim.parameters().time_step) / duration);
       sim.setAppliedForce(end(), Eigen::Vector3d(from + s * (force - from), 0.0, 0.0));
       sim.step();
-      breaks += sim.takeBreakEvents().size();
+      breaks += sim.takeTearEvents().size();
     }
   }
   void hold(double duration) { rampTo(sim.scene().vertices.applied_force[end()].x(), duration); }
@@ -80,7 +80,7 @@ double plasticStrainAtBreak(const Material& material, double rate) {
         yarn.end(),
         Eigen::Vector3d(rate * (yarn.sim.time() + yarn.sim.parameters().time_step), 0.0, 0.0));
     yarn.sim.step();
-    const std::vector<TearEvent> events = yarn.sim.takeBreakEvents();
+    const std::vector<TearEvent> events = yarn.sim.takeTearEvents();
     if (!events.empty()) return events[0].plastic_strain;
   }
   ADD_FAILURE() << "no break";

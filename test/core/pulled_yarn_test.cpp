@@ -58,7 +58,7 @@ TEST(PulledYarn, MomentumIsConservedAcrossABreak) {
   bool broke = false;
   for (int i = 0; i < 10; ++i) {
     pulled.sim.step();
-    broke = broke || !pulled.sim.takeBreakEvents().empty();
+    broke = broke || !pulled.sim.takeTearEvents().empty();
     EXPECT_LT(momentum(pulled.sim).norm(), 1e-12 * scale) << "step " << i;
   }
   EXPECT_TRUE(broke);

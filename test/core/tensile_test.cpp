@@ -21,7 +21,7 @@ TEST(Tensile, DrawnAtConstantSpeedTearsAtTheBreakingPoint) {
     const double t = sim.time() + sim.parameters().time_step;
     sim.setKinematicTarget(grasped, start + Eigen::Vector3d(speed * t, 0.0, 0.0));
     sim.step();
-    events = sim.takeBreakEvents();
+    events = sim.takeTearEvents();
     // Both holders feel the tension of the yarn between them.
     if (events.empty()) {
       EXPECT_NEAR(sim.supportForce(0).x(), sim.scene().edges.tension[0], 1e-6);

@@ -41,7 +41,7 @@ class Simulator {
   void releaseVertex(std::uint32_t vertex);
 
   /// Break events since the last call, in the order they happened; each is returned once.
-  std::vector<TearEvent> takeBreakEvents();
+  std::vector<TearEvent> takeTearEvents();
 
   /// Force the yarn exerts on the holder of a pinned or kinematic vertex [N] (zero if free).
   Eigen::Vector3d supportForce(std::uint32_t vertex) const { return support_force_[vertex]; }
