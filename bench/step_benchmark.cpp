@@ -14,10 +14,9 @@
 namespace yarn_tearing {
 namespace {
 
-/// A cotton yarn with 12.5 mm segments and a 10 g weight, hanging for 0.2 s. With `damping` the
-/// air damping is 0.05 N s/m^2 and the yarn has settled; without, the weight still bounces on the
-/// elastic yarn and slack stretches come and go (the projection's hardest steady case).
-Simulator hangingYarn(int vertices, bool damping) {
+/// A cotton yarn of `vertices` vertices, 12.5 mm segments, a 10 g weight on its end, hanging
+/// straight down from its pinned first vertex.
+YarnSpec benchYarn(int vertices) {
   YarnSpec spec;
   spec.name = "bench";
   spec.material.curve = StressStrainCurve({{0.0, 0.0}, {0.015, 1.14e8}, {0.071, 4.86e8}});
@@ -25,6 +24,14 @@ Simulator hangingYarn(int vertices, bool damping) {
   spec.length = 0.0125 * (vertices - 1);
   spec.pinned = {0};
   spec.end_mass = 0.01;
+  return spec;
+}
+
+/// The bench yarn, hanging for 0.2 s. With `damping` the
+/// air damping is 0.05 N s/m^2 and the yarn has settled; without, the weight still bounces on the
+/// elastic yarn and slack stretches come and go (the projection's hardest steady case).
+Simulator hangingYarn(int vertices, bool damping) {
+  const YarnSpec spec = benchYarn(vertices);
   SimulationParameters parameters;
   parameters.air_damping = damping ? 0.05 : 0.0;
   Simulator sim(parameters, {spec});
@@ -50,6 +57,28 @@ void BM_StepBouncing(benchmark::State& state) {
     sim.step();
     benchmark::ClobberMemory();
   }
+  state.SetComplexityN(state.range(0));
+}
+
+/// The first simulated second after a yarn with a 10 g weight is released straight from rest,
+/// without damping: the first step (every edge pulled taut from the top down), the tension wave
+/// running down and the weight bouncing back. Reports the mean cost of a step over that second
+/// (`per_step`, seconds); building the yarn is not timed.
+void BM_FirstSecondAfterRelease(benchmark::State& state) {
+  constexpr int kSteps = 1000;
+  const int vertices = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    state.PauseTiming();
+    YarnSpec spec = benchYarn(vertices);
+    SimulationParameters parameters;
+    Simulator sim(parameters, {spec});
+    state.ResumeTiming();
+    for (int i = 0; i < kSteps; ++i) sim.step();
+    benchmark::DoNotOptimize(sim.scene().vertices.position.data());
+  }
+  state.counters["per_step"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * kSteps,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.SetComplexityN(state.range(0));
 }
 
@@ -132,6 +161,7 @@ void BM_StageMaterialAndTearing(benchmark::State& state) {
 
 BENCHMARK(BM_Step)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StepBouncing)->YARN_SIZES->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_FirstSecondAfterRelease)->YARN_SIZES->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StageForcesAndPrediction)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StageProjection)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StageTensionEstimate)->YARN_SIZES->Unit(benchmark::kMicrosecond);

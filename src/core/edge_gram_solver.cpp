@@ -19,18 +19,7 @@ void EdgeGramSolver::setTopology(const EdgeSet& edges, std::size_t num_vertices)
     const bool increasing = e == 0 || edges.vertex_a[e] > edges.vertex_a[e - 1];
     if (!consecutive || !increasing) is_chain_ = false;
   }
-  incidence_offset_.assign(num_vertices + 1, 0);
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    ++incidence_offset_[edges.vertex_a[e] + 1];
-    ++incidence_offset_[edges.vertex_b[e] + 1];
-  }
-  for (std::size_t v = 0; v < num_vertices; ++v) incidence_offset_[v + 1] += incidence_offset_[v];
-  incidence_edge_.assign(incidence_offset_.back(), 0);
-  std::vector<std::uint32_t> fill(incidence_offset_.begin(), incidence_offset_.end() - 1);
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    incidence_edge_[fill[edges.vertex_a[e]]++] = static_cast<std::uint32_t>(e);
-    incidence_edge_[fill[edges.vertex_b[e]]++] = static_cast<std::uint32_t>(e);
-  }
+  incidence_.build(edges, num_vertices);
   diagonal_.resize(edges.size());
   included_.resize(edges.size());
   upper_.resize(edges.size());
@@ -99,8 +88,8 @@ void EdgeGramSolver::solveGeneral(const EdgeSet& edges, const GramSystem& system
     if (!included_[e]) continue;
     for (std::uint32_t v : {edges.vertex_a[e], edges.vertex_b[e]}) {
       if (w[v] == 0.0) continue;
-      for (std::uint32_t k = incidence_offset_[v]; k < incidence_offset_[v + 1]; ++k) {
-        const std::uint32_t f = incidence_edge_[k];
+      for (const std::uint32_t* it = incidence_.begin(v); it != incidence_.end(v); ++it) {
+        const std::uint32_t f = *it;
         if (f == e || !included_[f]) continue;
         triplets_.emplace_back(e, f, w[v] * roleSign(edges, e, f, v) * n[e].dot(n[f]));
       }

@@ -25,6 +25,7 @@ ProjectionResult LengthConstraintProjection::project(std::vector<Eigen::Vector3d
   candidate_.resize(q);
   target_.resize(q);
   product_.resize(q);
+  stretch_.resize(q);
   multiplier_.assign(q, 0.0);
   if (parameters.projection_method == ProjectionMethod::kGaussSeidel) {
     return projectGaussSeidel(position, edges, parameters);
@@ -79,24 +80,34 @@ void LengthConstraintProjection::solveComplementarity(const EdgeSet& edges, Edge
                                                       const GramSystem& system) {
   // Block principal pivoting: guess the set of taut edges, solve them as equalities, move the
   // edges whose force came out compressive out of the set and the slack edges that the solution
-  // would stretch into it, until nothing moves.
+  // would stretch into it, until nothing moves. The frontier takes in runs of slack edges that a
+  // pull would straighten at once instead of one per pass.
+  frontier_.reset(edges.size());
   for (int pass = 0; pass < kMaxPivotingPasses; ++pass) {
     for (std::size_t e = 0; e < edges.size(); ++e) step_[e] = active_[e] ? target_[e] : 0.0;
     gram.solve(edges, system, step_);
     multiplyGram(edges, step_, product_);
+    frontier_.beginPass(candidate_, active_, step_);
     bool changed = false;
     for (std::size_t e = 0; e < edges.size(); ++e) {
       if (!candidate_[e]) continue;
-      const bool compressive = active_[e] && step_[e] < 0.0;
-      // A slack edge joins only when the solution would stretch it past the tolerance, so that
-      // edges right at their limit do not flip in and out on round-off.
-      const bool stretched = !active_[e] && target_[e] - product_[e] > slack_tolerance_ * limit_[e];
-      if (compressive || stretched) {
-        active_[e] = active_[e] ? 0 : 1;
+      stretch_[e] = target_[e] - product_[e];
+      if (active_[e]) {
+        if (step_[e] < 0.0 && frontier_.mayLeave(e)) {
+          active_[e] = 0;
+          frontier_.left(e);
+          changed = true;
+        }
+      } else if (stretch_[e] > slack_tolerance_ * limit_[e]) {
+        // A slack edge joins only when the solution would stretch it past the tolerance, so
+        // that edges right at their limit do not flip in and out on round-off.
+        active_[e] = 1;
+        frontier_.joined(e);
         changed = true;
       }
     }
     if (!changed) return;
+    frontier_.grow(edges, gram.incidence(), candidate_, stretch_, active_);
   }
 }
 

@@ -57,8 +57,8 @@ class GraspTest(unittest.TestCase):
         config = support.load_yaml(rospy.get_param("~config"))
         yarn = config["yarns"][0]
         last = yarn["num_vertices"] - 1
-        states = support.StateRecorder()
-        self.assertTrue(states.wait_for_states(), "no yarn_states")
+        states = support.record_states()
+        self.assertTrue(states.wait_for_first(), "no yarn_states")
         gripper = MovingGripper()
         grasp_pub = rospy.Publisher("grasp", Grasp, queue_size=10)
 

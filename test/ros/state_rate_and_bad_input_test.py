@@ -25,10 +25,10 @@ class StateRateAndBadInputTest(unittest.TestCase):
         rospy.init_node("state_rate_and_bad_input_test")
         cls.config = support.load_yaml(rospy.get_param("~config"))
         cls.yarn = cls.config["yarns"][0]
-        cls.states = support.StateRecorder()
+        cls.states = support.record_states()
         cls.force_pub = rospy.Publisher("applied_force", AppliedForce, queue_size=100)
         cls.grasp_pub = rospy.Publisher("grasp", Grasp, queue_size=100)
-        assert cls.states.wait_for_states(), "no yarn_states within 15 s"
+        assert cls.states.wait_for_first(), "no yarn_states within 15 s"
         time.sleep(0.5)  # let the yarn settle under gravity
 
     def expected_weight(self):

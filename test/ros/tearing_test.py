@@ -20,10 +20,10 @@ class TearingTest(unittest.TestCase):
         breaking_stress = yarn["material"]["stress_strain"][-1][1]  # sigma_b [Pa]
         breaking_tension = breaking_stress * math.pi * yarn["radius"] ** 2  # [N]
 
-        breaks = support.BreakRecorder()
+        breaks = support.record_breaks()
         self.assertTrue(support.wait_until(breaks.events, timeout=40.0), "no break_events")
         rospy.sleep(0.5)  # any further (wrong) events
-        events = breaks.events()
+        events = breaks.messages()
         self.assertEqual(len(events), 1, "one break expected, got %d" % len(events))
         event = events[0]
         self.assertEqual(event.yarn, yarn["name"])

@@ -48,45 +48,43 @@ def state_is_finite(states):
     return True
 
 
-class StateRecorder:
-    """Records yarn_states with their wall receive time [s, time.monotonic()]."""
+class TopicRecorder:
+    """Records every message of one topic with its wall receive time [s, time.monotonic()]."""
 
-    def __init__(self, topic="yarn_states"):
+    def __init__(self, topic, message_type):
         self._lock = threading.Lock()
         self._records = []
-        self._subscriber = rospy.Subscriber(topic, YarnStateArray, self._on_state, queue_size=100)
+        self._subscriber = rospy.Subscriber(topic, message_type, self._on_message, queue_size=1000)
 
-    def _on_state(self, msg):
+    def _on_message(self, msg):
         with self._lock:
             self._records.append((time.monotonic(), msg))
 
     def records(self, since=float("-inf")):
+        """(receive time, msg) pairs received at or after `since`."""
         with self._lock:
             return [(t, m) for t, m in self._records if t >= since]
+
+    def messages(self):
+        with self._lock:
+            return [m for _, m in self._records]
 
     def latest(self):
         with self._lock:
             return self._records[-1][1] if self._records else None
 
-    def wait_for_states(self, timeout=15.0):
+    def wait_for_first(self, timeout=15.0):
         return wait_until(lambda: self.latest() is not None, timeout)
 
 
-class BreakRecorder:
+def record_states(topic="yarn_states"):
+    """Records yarn_states."""
+    return TopicRecorder(topic, YarnStateArray)
+
+
+def record_breaks(topic="break_events"):
     """Records break_events."""
-
-    def __init__(self, topic="break_events"):
-        self._lock = threading.Lock()
-        self._events = []
-        self._subscriber = rospy.Subscriber(topic, BreakEvent, self._on_break, queue_size=1000)
-
-    def _on_break(self, msg):
-        with self._lock:
-            self._events.append(msg)
-
-    def events(self):
-        with self._lock:
-            return list(self._events)
+    return TopicRecorder(topic, BreakEvent)
 
 
 def measured_rate(records):

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "yarn_tearing/core/edge_incidence.hpp"
 #include "yarn_tearing/core/edge_set.hpp"
 
 namespace yarn_tearing {
@@ -34,6 +35,8 @@ class EdgeGramSolver {
   void forceGeneralPath(bool force) { force_general_ = force; }
   /// True when the O(N) banded path is used.
   bool usesBandedPath() const { return is_chain_ && !force_general_; }
+  /// The edges meeting at each vertex, as learnt by setTopology.
+  const EdgeIncidence& incidence() const { return incidence_; }
 
   /// Solves in place: `rhs` in, x out.
   void solve(const EdgeSet& edges, const GramSystem& system, std::vector<double>& rhs);
@@ -46,12 +49,11 @@ class EdgeGramSolver {
 
   bool is_chain_ = false;
   bool force_general_ = false;
-  std::vector<std::uint32_t> incidence_offset_;  ///< CSR offsets of vertex -> incident edges
-  std::vector<std::uint32_t> incidence_edge_;    ///< CSR incident edges
-  std::vector<double> diagonal_;                 ///< assembled diagonal (1 for left-out edges)
-  std::vector<std::uint8_t> included_;           ///< active edges with a movable vertex
-  std::vector<double> upper_;                    ///< banded: G_e,e+1
-  std::vector<double> sweep_;                    ///< banded: Thomas elimination factors
+  EdgeIncidence incidence_;
+  std::vector<double> diagonal_;        ///< assembled diagonal (1 for left-out edges)
+  std::vector<std::uint8_t> included_;  ///< active edges with a movable vertex
+  std::vector<double> upper_;           ///< banded: G_e,e+1
+  std::vector<double> sweep_;           ///< banded: Thomas elimination factors
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> matrix_;
   /// The sparse factorization is recomputed by every solve, so copies start without one (Eigen's

@@ -8,6 +8,7 @@
 #include "yarn_tearing/core/edge_set.hpp"
 #include "yarn_tearing/core/simulation_parameters.hpp"
 #include "yarn_tearing/core/stiff_newton_step.hpp"
+#include "yarn_tearing/core/taut_frontier.hpp"
 #include "yarn_tearing/core/vertex_set.hpp"
 
 namespace yarn_tearing {
@@ -32,8 +33,10 @@ struct ProjectionResult {
 /// vertices move by -W J^T (change of the multipliers), W the inverse masses. Each iteration
 /// linearizes at the current positions and solves the resulting linear complementarity problem
 /// in the total multipliers exactly (taut edges pull, slack ones carry nothing, none pushes) by
-/// block principal pivoting over a banded (chains) or sparse solve. Edges whose vertices are all
-/// pinned or kinematic cannot be corrected and are not counted.
+/// block principal pivoting over a banded (chains) or sparse solve; a TautFrontier takes in a
+/// whole run of slack edges that a pull straightens at once, where plain pivoting would take one
+/// edge per pass. Edges whose vertices are all pinned or kinematic cannot be corrected and are
+/// not counted.
 class LengthConstraintProjection {
  public:
   /// Projects `position` in place. `compliance` is c per edge [m/N]; masses and supports come
@@ -75,6 +78,8 @@ class LengthConstraintProjection {
   std::vector<std::uint8_t> was_taut_;       ///< edges taut at the end of the last projection
   std::vector<double> target_;               ///< right-hand side of the complementarity problem
   std::vector<double> product_;              ///< K times a multiplier vector [m]
+  std::vector<double> stretch_;              ///< a pass's stretch past the limit per edge [m]
+  TautFrontier frontier_;                    ///< takes in runs of slack edges at once
   std::vector<Eigen::Vector3d> predicted_;   ///< positions before the projection [m]
   StiffNewtonStep newton_;                   ///< fallback when the fast iterations stall
   std::vector<std::uint8_t> newton_taut_;    ///< edges the Newton step takes as equalities
