@@ -138,8 +138,8 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
       for (std::size_t e = 0; e < edges.size(); ++e) {
         newton_taut_[e] = candidate_[e] && (multiplier_[e] > 0.0 || residual_[e] > 0.0);
       }
-      newton_.apply(predicted_, inverse_mass_, edges, shift_, candidate_, newton_taut_, position,
-                    multiplier_);
+      newton_.apply(predicted_, inverse_mass_, edges, gram.incidence(), shift_, candidate_,
+                    newton_taut_, position, multiplier_);
     } else {
       // Linearized at the current iterate x_k (directions J, Gram matrix K = J W J^T), moving the
       // vertices by -W J^T (m - m_k) gives C(x_k) - K (m - m_k) - (c/dt^2) m <= 0 for every edge,

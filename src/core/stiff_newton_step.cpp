@@ -93,30 +93,44 @@ double StiffNewtonStep::linearizedStretch(const EdgeSet& edges, std::size_t e,
 
 void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
                             const std::vector<double>& inverse_mass, const EdgeSet& edges,
-                            const std::vector<double>& shift,
+                            const EdgeIncidence& incidence, const std::vector<double>& shift,
                             const std::vector<std::uint8_t>& movable,
                             std::vector<std::uint8_t>& taut, std::vector<Eigen::Vector3d>& position,
                             std::vector<double>& multiplier) {
   for (std::size_t e = 0; e < edges.size(); ++e) taut[e] = taut[e] & movable[e];
+  pass_multiplier_.resize(edges.size());
+  stretch_.resize(edges.size());
+  frontier_.reset(edges.size());
   // Block principal pivoting, as in the fast iterations: release the taut edges that would
-  // push, take in the slack ones that the step would stretch, solve again.
+  // push, take in the slack ones that the step would stretch (with the taut frontier), solve
+  // again.
   for (int pass = 0;; ++pass) {
     if (!solve(predicted, inverse_mass, edges, shift, taut, position, multiplier)) return;
     if (pass == kMaxPivotingPasses) break;
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      pass_multiplier_[e] = edge_row_[e] >= 0 ? solution_[edge_row_[e]] : 0.0;
+    }
+    frontier_.beginPass(movable, taut, pass_multiplier_);
     bool changed = false;
     for (std::size_t e = 0; e < edges.size(); ++e) {
       if (!movable[e]) continue;
-      if (edge_row_[e] >= 0) {
-        if (solution_[edge_row_[e]] < 0.0) {
+      if (taut[e]) {
+        if (pass_multiplier_[e] < 0.0 && frontier_.mayLeave(e)) {
           taut[e] = 0;
+          frontier_.left(e);
           changed = true;
         }
-      } else if (linearizedStretch(edges, e, position) > kSlackTolerance * edges.rest_length[e]) {
+        continue;
+      }
+      stretch_[e] = linearizedStretch(edges, e, position);
+      if (stretch_[e] > kSlackTolerance * edges.rest_length[e]) {
         taut[e] = 1;
+        frontier_.joined(e);
         changed = true;
       }
     }
     if (!changed) break;
+    frontier_.grow(edges, incidence, movable, stretch_, taut);
   }
   for (std::size_t v = 0; v < position.size(); ++v) {
     if (vertex_row_[v] >= 0) position[v] += solution_.segment<3>(vertex_row_[v]);

@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "yarn_tearing/core/edge_incidence.hpp"
 #include "yarn_tearing/core/edge_set.hpp"
+#include "yarn_tearing/core/taut_frontier.hpp"
 
 namespace yarn_tearing {
 
@@ -18,14 +20,15 @@ namespace yarn_tearing {
 /// between two taut edges from being flung across the line (what stalls the fast projection
 /// when a heavy end swings a light yarn), and the fixed point conserves momentum exactly.
 /// The taut set is settled by block principal pivoting: edges whose multiplier comes out
-/// negative are released, slack edges the step would stretch are taken in, and it is solved again.
+/// negative are released, slack edges the step would stretch are taken in (runs of them at once,
+/// by a TautFrontier), and it is solved again.
 class StiffNewtonStep {
  public:
   /// Moves `position` by one step and overwrites `multiplier` (0 for edges not taut). `taut`
   /// marks the edges taken as equalities (updated when edges are released); `movable` the edges
   /// that may take part; `inverse_mass` is 0 for pinned and kinematic vertices.
   void apply(const std::vector<Eigen::Vector3d>& predicted, const std::vector<double>& inverse_mass,
-             const EdgeSet& edges, const std::vector<double>& shift,
+             const EdgeSet& edges, const EdgeIncidence& incidence, const std::vector<double>& shift,
              const std::vector<std::uint8_t>& movable, std::vector<std::uint8_t>& taut,
              std::vector<Eigen::Vector3d>& position, std::vector<double>& multiplier);
 
@@ -48,6 +51,9 @@ class StiffNewtonStep {
   Eigen::SparseMatrix<double> matrix_;
   Eigen::VectorXd rhs_;
   Eigen::VectorXd solution_;
+  std::vector<double> pass_multiplier_;  ///< multiplier of each edge in a pass's solution [kg*m]
+  std::vector<double> stretch_;          ///< a pass's linearized stretch of slack edges [m]
+  TautFrontier frontier_;                ///< takes in runs of slack edges at once
 };
 
 }  // namespace yarn_tearing
