@@ -21,7 +21,7 @@ class TearingTest(unittest.TestCase):
         breaking_tension = breaking_stress * math.pi * yarn["radius"] ** 2  # [N]
 
         breaks = support.record_breaks()
-        self.assertTrue(support.wait_until(breaks.events, timeout=40.0), "no break_events")
+        self.assertTrue(support.wait_until(breaks.messages, timeout=40.0), "no break_events")
         rospy.sleep(0.5)  # any further (wrong) events
         events = breaks.messages()
         self.assertEqual(len(events), 1, "one break expected, got %d" % len(events))
