@@ -26,12 +26,8 @@ TOLERANCE = 0.02     # relative, on the support force
 class ForceFrameTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        rospy.init_node("force_frame_test")
-        cls.config = support.load_yaml(rospy.get_param("~config"))
-        cls.yarn = cls.config["yarns"][0]
-        cls.states = support.record_states()
+        support.start_client(cls, "force_frame_test")
         cls.force_pub = rospy.Publisher("applied_force", AppliedForce, queue_size=10)
-        assert cls.states.wait_for_first(), "no yarn_states"
         assert support.wait_until(lambda: cls.force_pub.get_num_connections() > 0, 10.0)
 
     def send(self, force, duration=0.0, frame="rotated"):

@@ -22,13 +22,9 @@ MEASURE_SECONDS = 3.0
 class StateRateAndBadInputTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        rospy.init_node("state_rate_and_bad_input_test")
-        cls.config = support.load_yaml(rospy.get_param("~config"))
-        cls.yarn = cls.config["yarns"][0]
-        cls.states = support.record_states()
+        support.start_client(cls, "state_rate_and_bad_input_test")
         cls.force_pub = rospy.Publisher("applied_force", AppliedForce, queue_size=100)
         cls.grasp_pub = rospy.Publisher("grasp", Grasp, queue_size=100)
-        assert cls.states.wait_for_first(), "no yarn_states within 15 s"
         time.sleep(0.5)  # let the yarn settle under gravity
 
     def expected_weight(self):

@@ -87,6 +87,16 @@ def record_breaks(topic="break_events"):
     return TopicRecorder(topic, BreakEvent)
 
 
+def start_client(test_class, node_name):
+    """Starts a test node and gives `test_class` the node's config (~config), its first yarn and a
+    yarn_states recorder; fails unless states arrive within 15 s."""
+    rospy.init_node(node_name)
+    test_class.config = load_yaml(rospy.get_param("~config"))
+    test_class.yarn = test_class.config["yarns"][0]
+    test_class.states = record_states()
+    assert test_class.states.wait_for_first(), "no yarn_states within 15 s"
+
+
 def measured_rate(records):
     """Messages per wall second over a list of (receive time, msg)."""
     if len(records) < 2:
