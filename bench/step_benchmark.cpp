@@ -103,19 +103,16 @@ void BM_StageProjection(benchmark::State& state) {
   const Scene& scene = sim.scene();
   std::vector<Eigen::Vector3d> predicted = scene.vertices.position;
   for (std::size_t v = 1; v < predicted.size(); ++v) predicted[v].z() -= 9.81e-6;  // g dt^2
-  std::vector<double> compliance(scene.edges.size());
-  for (std::size_t e = 0; e < compliance.size(); ++e) {
-    compliance[e] = scene.edges.rest_length[e] /
-                    (scene.yarns[0].material.curve.youngsModulus() * scene.edges.area[e]);
-  }
+  EdgeStretchLimits limits;
+  computeStretchLimits(scene, limits);
   LengthConstraintProjection projection;
   EdgeGramSolver gram;
   gram.setTopology(scene.edges, scene.vertices.size());
   std::vector<Eigen::Vector3d> position;
   for (auto _ : state) {
     position = predicted;
-    benchmark::DoNotOptimize(projection.project(position, scene.vertices, scene.edges, compliance,
-                                                sim.parameters(), gram));
+    benchmark::DoNotOptimize(
+        projection.project(position, scene.vertices, scene.edges, limits, sim.parameters(), gram));
   }
   state.SetComplexityN(state.range(0));
 }

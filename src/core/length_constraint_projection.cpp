@@ -5,18 +5,14 @@
 
 namespace yarn_tearing {
 
-ProjectionResult LengthConstraintProjection::project(std::vector<Eigen::Vector3d>& position,
-                                                     const VertexSet& vertices,
-                                                     const EdgeSet& edges,
-                                                     const std::vector<double>& compliance,
-                                                     const SimulationParameters& parameters,
-                                                     EdgeGramSolver& gram) {
+ProjectionResult LengthConstraintProjection::project(
+    std::vector<Eigen::Vector3d>& position, const VertexSet& vertices, const EdgeSet& edges,
+    const EdgeStretchLimits& limits, const SimulationParameters& parameters, EdgeGramSolver& gram) {
   time_step2_ = parameters.time_step * parameters.time_step;
   inverse_mass_.resize(vertices.size());
   for (std::size_t v = 0; v < vertices.size(); ++v) inverse_mass_[v] = vertices.inverseMass(v);
   const std::size_t q = edges.size();
-  shift_.resize(q);
-  for (std::size_t e = 0; e < q; ++e) shift_[e] = compliance[e] / time_step2_;
+  stretch_state_.reset(edges, limits, parameters.time_step);
   direction_.resize(q);
   residual_.resize(q);
   limit_.resize(q);
@@ -48,7 +44,8 @@ double LengthConstraintProjection::evaluate(const std::vector<Eigen::Vector3d>& 
     const Eigen::Vector3d d = position[b] - position[a];
     const double length = d.norm();
     direction_[e] = length > 0.0 ? Eigen::Vector3d(d / length) : Eigen::Vector3d::Zero();
-    limit_[e] = edges.rest_length[e] + shift_[e] * multiplier_[e];
+    stretch_state_.settle(edges, e, multiplier_[e]);
+    limit_[e] = stretch_state_.limit(e, multiplier_[e]);
     residual_[e] = length - limit_[e];
     const bool holding = multiplier_[e] > 0.0;
     active_[e] = (residual_[e] > 0.0 || holding) ? 1 : 0;
@@ -80,8 +77,9 @@ void LengthConstraintProjection::solveComplementarity(const EdgeSet& edges, Edge
                                                       const GramSystem& system) {
   // Block principal pivoting: guess the set of taut edges, solve them as equalities, move the
   // edges whose force came out compressive out of the set and the slack edges that the solution
-  // would stretch into it, until nothing moves. The frontier takes in runs of slack edges that a
-  // pull would straighten at once instead of one per pass.
+  // would stretch into it, and switch taut edges between compliant and held at their breaking
+  // length as their force crosses the one that reaches it, until nothing moves. The frontier takes
+  // in runs of slack edges that a pull would straighten at once instead of one per pass.
   frontier_.reset(edges.size());
   for (int pass = 0; pass < kMaxPivotingPasses; ++pass) {
     for (std::size_t e = 0; e < edges.size(); ++e) step_[e] = active_[e] ? target_[e] : 0.0;
@@ -96,6 +94,10 @@ void LengthConstraintProjection::solveComplementarity(const EdgeSet& edges, Edge
         if (step_[e] < 0.0 && frontier_.mayLeave(e)) {
           active_[e] = 0;
           frontier_.left(e);
+          target_[e] += stretch_state_.release(edges, e);
+          changed = true;
+        } else if (step_[e] > 0.0 && stretch_state_.wouldSwitch(e, step_[e])) {
+          target_[e] += stretch_state_.settle(edges, e, step_[e]);
           changed = true;
         }
       } else if (stretch_[e] > slack_tolerance_ * limit_[e]) {
@@ -119,7 +121,7 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
   system.direction = &direction_;
   system.vertex_weight = &inverse_mass_;
   system.active = &active_;
-  system.diagonal_shift = &shift_;
+  system.diagonal_shift = &stretch_state_.shift();
   slack_tolerance_ = 0.1 * parameters.constraint_tolerance;
   newton_taut_.resize(edges.size());
   vertex_sum_.resize(position.size());
@@ -138,7 +140,7 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
       for (std::size_t e = 0; e < edges.size(); ++e) {
         newton_taut_[e] = candidate_[e] && (multiplier_[e] > 0.0 || residual_[e] > 0.0);
       }
-      newton_.apply(predicted_, inverse_mass_, edges, gram.incidence(), shift_, candidate_,
+      newton_.apply(predicted_, inverse_mass_, edges, gram.incidence(), stretch_state_, candidate_,
                     newton_taut_, position, multiplier_);
     } else {
       // Linearized at the current iterate x_k (directions J, Gram matrix K = J W J^T), moving the
@@ -148,7 +150,7 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
       // but never pushes.
       multiplyGram(edges, multiplier_, product_);
       for (std::size_t e = 0; e < edges.size(); ++e) {
-        target_[e] = residual_[e] + shift_[e] * multiplier_[e] + product_[e];
+        target_[e] = residual_[e] + stretch_state_.shift()[e] * multiplier_[e] + product_[e];
       }
       solveComplementarity(edges, gram, system);
       for (std::size_t e = 0; e < edges.size(); ++e) {
@@ -184,8 +186,9 @@ ProjectionResult LengthConstraintProjection::projectGaussSeidel(
       const std::uint32_t b = edges.vertex_b[e];
       const Eigen::Vector3d d = position[b] - position[a];
       const double length = d.norm();
-      const double residual = length - edges.rest_length[e] - shift_[e] * multiplier_[e];
-      const double denominator = inverse_mass_[a] + inverse_mass_[b] + shift_[e];
+      stretch_state_.settle(edges, e, multiplier_[e]);
+      const double residual = length - stretch_state_.limit(e, multiplier_[e]);
+      const double denominator = inverse_mass_[a] + inverse_mass_[b] + stretch_state_.shift()[e];
       const double dl = std::max(residual / denominator, -multiplier_[e]);
       if (dl == 0.0 || !(length > 0.0)) continue;
       multiplier_[e] += dl;

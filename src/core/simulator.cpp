@@ -61,7 +61,6 @@ void Simulator::reset() {
   work_.start_position.assign(n, Eigen::Vector3d::Zero());
   work_.start_velocity.assign(n, Eigen::Vector3d::Zero());
   work_.constraint_tension.assign(scene_.edges.size(), 0.0);
-  work_.compliance.assign(scene_.edges.size(), 0.0);
   work_.gram.setTopology(scene_.edges, n);
   work_.gram.forceGeneralPath(parameters_.force_general_solver);
   support_force_.assign(n, Eigen::Vector3d::Zero());
@@ -95,12 +94,9 @@ void Simulator::predictPositions() {
 void Simulator::projectLengthConstraints() {
   VertexSet& vertices = scene_.vertices;
   EdgeSet& edges = scene_.edges;
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    const double modulus = scene_.yarns[edges.yarn[e]].material.curve.youngsModulus();
-    work_.compliance[e] = edges.rest_length[e] / (modulus * edges.area[e]);
-  }
+  computeStretchLimits(scene_, work_.stretch_limits);
   const ProjectionResult result = work_.projection.project(
-      vertices.position, vertices, edges, work_.compliance, parameters_, work_.gram);
+      vertices.position, vertices, edges, work_.stretch_limits, parameters_, work_.gram);
   for (std::size_t e = 0; e < edges.size(); ++e) {
     work_.constraint_tension[e] = work_.projection.constraintForce(e);
   }

@@ -14,7 +14,8 @@ void addBlock(std::vector<Eigen::Triplet<double>>& triplets, int row, int col,
 
 bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
                             const std::vector<double>& inverse_mass, const EdgeSet& edges,
-                            const std::vector<double>& shift, const std::vector<std::uint8_t>& taut,
+                            const EdgeStretchState& stretch_state,
+                            const std::vector<std::uint8_t>& taut,
                             const std::vector<Eigen::Vector3d>& position,
                             const std::vector<double>& multiplier) {
   const std::size_t n = position.size();
@@ -67,8 +68,8 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
         triplets_.emplace_back(rb + i, re, dir[i]);
       }
     }
-    triplets_.emplace_back(re, re, -shift[e]);
-    rhs_[re] = -(length - edges.rest_length[e]);
+    triplets_.emplace_back(re, re, -stretch_state.shift()[e]);
+    rhs_[re] = -(length - stretch_state.baseLength()[e]);
   }
   matrix_.resize(rows, rows);
   matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
@@ -78,7 +79,8 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
   return ldlt.info() == Eigen::Success && solution_.allFinite();
 }
 
-double StiffNewtonStep::linearizedStretch(const EdgeSet& edges, std::size_t e,
+double StiffNewtonStep::linearizedStretch(const EdgeSet& edges,
+                                          const EdgeStretchState& stretch_state, std::size_t e,
                                           const std::vector<Eigen::Vector3d>& position) const {
   const std::uint32_t a = edges.vertex_a[e];
   const std::uint32_t b = edges.vertex_b[e];
@@ -88,12 +90,12 @@ double StiffNewtonStep::linearizedStretch(const EdgeSet& edges, std::size_t e,
   Eigen::Vector3d move = Eigen::Vector3d::Zero();
   if (vertex_row_[b] >= 0) move += solution_.segment<3>(vertex_row_[b]);
   if (vertex_row_[a] >= 0) move -= solution_.segment<3>(vertex_row_[a]);
-  return length - edges.rest_length[e] + (d / length).dot(move);
+  return length - stretch_state.baseLength()[e] + (d / length).dot(move);
 }
 
 void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
                             const std::vector<double>& inverse_mass, const EdgeSet& edges,
-                            const EdgeIncidence& incidence, const std::vector<double>& shift,
+                            const EdgeIncidence& incidence, EdgeStretchState& stretch_state,
                             const std::vector<std::uint8_t>& movable,
                             std::vector<std::uint8_t>& taut, std::vector<Eigen::Vector3d>& position,
                             std::vector<double>& multiplier) {
@@ -105,7 +107,9 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
   // push, take in the slack ones that the step would stretch (with the taut frontier), solve
   // again.
   for (int pass = 0;; ++pass) {
-    if (!solve(predicted, inverse_mass, edges, shift, taut, position, multiplier)) return;
+    if (!solve(predicted, inverse_mass, edges, stretch_state, taut, position, multiplier)) {
+      return;
+    }
     if (pass == kMaxPivotingPasses) break;
     for (std::size_t e = 0; e < edges.size(); ++e) {
       pass_multiplier_[e] = edge_row_[e] >= 0 ? solution_[edge_row_[e]] : 0.0;
@@ -118,11 +122,15 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
         if (pass_multiplier_[e] < 0.0 && frontier_.mayLeave(e)) {
           taut[e] = 0;
           frontier_.left(e);
+          stretch_state.release(edges, e);
+          changed = true;
+        } else if (pass_multiplier_[e] > 0.0 && stretch_state.wouldSwitch(e, pass_multiplier_[e])) {
+          stretch_state.settle(edges, e, pass_multiplier_[e]);
           changed = true;
         }
         continue;
       }
-      stretch_[e] = linearizedStretch(edges, e, position);
+      stretch_[e] = linearizedStretch(edges, stretch_state, e, position);
       if (stretch_[e] > kSlackTolerance * edges.rest_length[e]) {
         taut[e] = 1;
         frontier_.joined(e);

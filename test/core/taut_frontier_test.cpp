@@ -30,17 +30,14 @@ void expectReleasedYarnHeldInOneIteration(bool general_path) {
 
   std::vector<Eigen::Vector3d> position = scene.vertices.position;
   for (std::size_t v = 1; v < position.size(); ++v) position[v].z() -= fall;
-  std::vector<double> compliance(scene.edges.size());
-  for (std::size_t e = 0; e < compliance.size(); ++e) {
-    compliance[e] = scene.edges.rest_length[e] /
-                    (scene.yarns[0].material.curve.youngsModulus() * scene.edges.area[e]);
-  }
+  EdgeStretchLimits limits;
+  computeStretchLimits(scene, limits);
   EdgeGramSolver gram;
   gram.setTopology(scene.edges, scene.vertices.size());
   gram.forceGeneralPath(general_path);
   LengthConstraintProjection projection;
   const ProjectionResult result =
-      projection.project(position, scene.vertices, scene.edges, compliance, parameters, gram);
+      projection.project(position, scene.vertices, scene.edges, limits, parameters, gram);
 
   EXPECT_TRUE(result.converged);
   EXPECT_EQ(result.iterations, 1);

@@ -6,6 +6,8 @@
 
 #include "yarn_tearing/core/edge_gram_solver.hpp"
 #include "yarn_tearing/core/edge_set.hpp"
+#include "yarn_tearing/core/edge_stretch_limits.hpp"
+#include "yarn_tearing/core/edge_stretch_state.hpp"
 #include "yarn_tearing/core/simulation_parameters.hpp"
 #include "yarn_tearing/core/stiff_newton_step.hpp"
 #include "yarn_tearing/core/taut_frontier.hpp"
@@ -21,13 +23,16 @@ struct ProjectionResult {
 };
 
 /// Stage 3: limits every intact edge, stretch only, to
-///   |x_a - x_b| <= L (1 + s),   s = c T / L,
-/// with L the (plastic) rest length, c = L / (E A) the edge's elastic compliance [m/N] and T the
-/// force the constraint itself exerts (its multiplier / dt^2). The strain limit s is thus the
+///   |x_a - x_b| <= L + min(c T, s_max),
+/// with L the (plastic) rest length, c = L0 / (E A) the edge's elastic compliance [m/N], T the
+/// force the constraint itself exerts (its multiplier / dt^2) and s_max the stretch [m] at which
+/// the edge reaches its breaking length (EdgeStretchLimits). The strain limit is thus the
 /// elastic strain of the edge's current stress (paper §3.3), solved in the same system
 /// rather than lagged by a step: the lagged update oscillates and grows once the yarn's own
 /// elastic vibration is resolved by the time step (omega dt < 1, e.g. a heavy weight), while this
 /// one is stable at any dt and mass ratio and reduces to the hard constraint when E A is large.
+/// At the breaking length the constraint turns hard (linearized per iteration): an overload
+/// holds the edge there, at any force, until the tearing stage cuts it.
 ///
 /// The projection is mass-weighted, as the fast projection of Goldenthal et al. (2007): the
 /// vertices move by -W J^T (change of the multipliers), W the inverse masses. Each iteration
@@ -39,17 +44,17 @@ struct ProjectionResult {
 /// not counted.
 class LengthConstraintProjection {
  public:
-  /// Projects `position` in place. `compliance` is c per edge [m/N]; masses and supports come
-  /// from `vertices`.
+  /// Projects `position` in place. `limits` gives each edge's compliance c [m/N] and largest
+  /// stretch [m]; masses and supports come from `vertices`.
   ProjectionResult project(std::vector<Eigen::Vector3d>& position, const VertexSet& vertices,
-                           const EdgeSet& edges, const std::vector<double>& compliance,
+                           const EdgeSet& edges, const EdgeStretchLimits& limits,
                            const SimulationParameters& parameters, EdgeGramSolver& gram);
 
   /// Force each edge's constraint exerted in the last projection [N] (0 where inactive).
   double constraintForce(std::size_t e) const { return multiplier_[e] / time_step2_; }
   /// Strain limit s each edge was held to in the last projection [-].
   double strainLimit(std::size_t e, const EdgeSet& edges) const {
-    return shift_[e] * multiplier_[e] / edges.rest_length[e];
+    return stretch_state_.limit(e, multiplier_[e]) / edges.rest_length[e] - 1.0;
   }
 
  private:
@@ -67,7 +72,7 @@ class LengthConstraintProjection {
 
   double time_step2_ = 1.0;                  ///< dt^2 [s^2]
   std::vector<double> inverse_mass_;         ///< [1/kg]
-  std::vector<double> shift_;                ///< c / dt^2 per edge [1/kg]
+  EdgeStretchState stretch_state_;           ///< compliant or held at the breaking length
   std::vector<Eigen::Vector3d> direction_;   ///< unit edge directions
   std::vector<double> residual_;             ///< length - L - c T [m]
   std::vector<double> limit_;                ///< L + c T [m]

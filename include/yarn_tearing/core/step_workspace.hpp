@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "yarn_tearing/core/edge_gram_solver.hpp"
+#include "yarn_tearing/core/edge_stretch_limits.hpp"
 #include "yarn_tearing/core/length_constraint_projection.hpp"
 #include "yarn_tearing/core/tearing.hpp"
 #include "yarn_tearing/core/tension_estimator.hpp"
@@ -16,7 +17,7 @@ struct StepWorkspace {
   std::vector<Eigen::Vector3d> force;           ///< non-constraint force per vertex [N]
   std::vector<Eigen::Vector3d> start_position;  ///< x at the start of the step [m]
   std::vector<Eigen::Vector3d> start_velocity;  ///< v at the start of the step [m/s]
-  std::vector<double> compliance;               ///< elastic compliance L / (E A) [m/N]
+  EdgeStretchLimits stretch_limits;             ///< compliance and largest stretch per edge
   std::vector<double> constraint_tension;       ///< constraint part of the tension [N]
   EdgeGramSolver gram;                          ///< J W J^T solver shared by stages 3 and 4
   LengthConstraintProjection projection;        ///< stage 3

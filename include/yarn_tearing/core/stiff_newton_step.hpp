@@ -8,13 +8,15 @@
 
 #include "yarn_tearing/core/edge_incidence.hpp"
 #include "yarn_tearing/core/edge_set.hpp"
+#include "yarn_tearing/core/edge_stretch_state.hpp"
 #include "yarn_tearing/core/taut_frontier.hpp"
 
 namespace yarn_tearing {
 
 /// One Newton step of the exact implicit projection, with geometric stiffness:
 ///   M (x - x~) + J(x)^T m = 0,    C_e(x) - s_e m_e = 0 for the taut edges,  m >= 0,
-/// C_e = |x_b - x_a| - L_e, s_e = c_e / dt^2 the compliance term [1/kg], m the multipliers
+/// C_e = |x_b - x_a| - B_e (B_e the base length: the rest length, or the breaking length where
+/// the stretch is at its largest), s_e = c_e / dt^2 the compliance term [1/kg], m the multipliers
 /// [kg*m]. Linearized, (M + sum_e m_e Hess C_e) dx + J^T m' = -M (x - x~) and J dx - s m' = -C,
 /// a quasi-definite system solved by sparse LDL^T. The geometric stiffness keeps a light vertex
 /// between two taut edges from being flung across the line (what stalls the fast projection
@@ -26,22 +28,24 @@ class StiffNewtonStep {
  public:
   /// Moves `position` by one step and overwrites `multiplier` (0 for edges not taut). `taut`
   /// marks the edges taken as equalities (updated when edges are released); `movable` the edges
-  /// that may take part; `inverse_mass` is 0 for pinned and kinematic vertices.
+  /// that may take part; `inverse_mass` is 0 for pinned and kinematic vertices; `stretch_state`
+  /// gives B_e and s_e per edge, and is switched where a taut edge's force crosses the one that
+  /// reaches its breaking length.
   void apply(const std::vector<Eigen::Vector3d>& predicted, const std::vector<double>& inverse_mass,
-             const EdgeSet& edges, const EdgeIncidence& incidence, const std::vector<double>& shift,
+             const EdgeSet& edges, const EdgeIncidence& incidence, EdgeStretchState& stretch_state,
              const std::vector<std::uint8_t>& movable, std::vector<std::uint8_t>& taut,
              std::vector<Eigen::Vector3d>& position, std::vector<double>& multiplier);
 
  private:
   /// Assembles and solves the system for the current `taut` set into solution_.
   bool solve(const std::vector<Eigen::Vector3d>& predicted, const std::vector<double>& inverse_mass,
-             const EdgeSet& edges, const std::vector<double>& shift,
+             const EdgeSet& edges, const EdgeStretchState& stretch_state,
              const std::vector<std::uint8_t>& taut, const std::vector<Eigen::Vector3d>& position,
              const std::vector<double>& multiplier);
 
-  /// Length minus rest length [m] of a slack edge after the solved step, to first order.
-  double linearizedStretch(const EdgeSet& edges, std::size_t e,
-                           const std::vector<Eigen::Vector3d>& position) const;
+  /// Length minus base length [m] of a slack edge after the solved step, to first order.
+  double linearizedStretch(const EdgeSet& edges, const EdgeStretchState& stretch_state,
+                           std::size_t e, const std::vector<Eigen::Vector3d>& position) const;
 
   static constexpr int kMaxPivotingPasses = 30;    ///< re-solves after changing the taut set
   static constexpr double kSlackTolerance = 1e-9;  ///< stretch (per rest length) that makes taut
