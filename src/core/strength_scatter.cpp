@@ -15,10 +15,28 @@ std::uint64_t splitmix64(std::uint64_t& state) {
 
 }  // namespace
 
+double weibullCoefficientOfVariation(double modulus) {
+  const double mean = std::tgamma(1.0 + 1.0 / modulus);
+  return std::sqrt(std::tgamma(1.0 + 2.0 / modulus) / (mean * mean) - 1.0);
+}
+
+double weibullModulusForCoefficientOfVariation(double cv) {
+  // CV(1) = 1 and CV falls towards 0 as m grows (CV ~ 1.28 / m): bracket [1, 1e4].
+  double low = 1.0;
+  double high = 1.0e4;
+  for (int i = 0; i < 200 && high - low > 1e-12 * high; ++i) {
+    const double middle = 0.5 * (low + high);
+    (weibullCoefficientOfVariation(middle) > cv ? low : high) = middle;
+  }
+  return 0.5 * (low + high);
+}
+
 std::vector<double> strengthFactors(const StrengthScatter& scatter, std::size_t count) {
   std::vector<double> factors(count, 1.0);
-  if (scatter.weibull_modulus <= 0.0) return factors;
-  const double m = scatter.weibull_modulus;
+  const double m = scatter.coefficient_of_variation > 0.0
+                       ? weibullModulusForCoefficientOfVariation(scatter.coefficient_of_variation)
+                       : scatter.weibull_modulus;
+  if (m <= 0.0) return factors;
   const double mean = std::tgamma(1.0 + 1.0 / m);  // mean of a unit-scale Weibull
   std::uint64_t state = scatter.seed;
   for (double& f : factors) {

@@ -48,6 +48,13 @@ void YarnSpec::validate() const {
   require(
       std::isfinite(strength_scatter.weibull_modulus) && strength_scatter.weibull_modulus >= 0.0,
       name, "weibull_modulus must be >= 0 (0 = no scatter)");
+  const double cv = strength_scatter.coefficient_of_variation;
+  require(
+      std::isfinite(cv) && cv >= 0.0 && cv <= 1.0, name,
+      "strength coefficient of variation must be in [0, 1] (0 = none), got " + std::to_string(cv));
+  require(cv == 0.0 || strength_scatter.weibull_modulus == 0.0, name,
+          "give the strength scatter as a Weibull modulus or as a coefficient of variation, not "
+          "both");
 }
 
 double YarnSpec::area() const {

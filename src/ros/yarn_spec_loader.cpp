@@ -50,7 +50,7 @@ YarnSpec loadYarnSpec(const ParamValue& yarn, const ParamValue& presets) {
   }
   yarn.requireKeysIn({"name", "material", "radius", "tex", "packing_fraction", "length",
                       "num_vertices", "start", "direction", "pinned", "end_mass", "weibull_modulus",
-                      "seed"});
+                      "strength_cv", "seed"});
   YarnSpec spec;
   spec.name = yarn.member("name").string(false);
   spec.material = loadMaterial(yarn.member("material"), presets);
@@ -75,6 +75,13 @@ YarnSpec loadYarnSpec(const ParamValue& yarn, const ParamValue& presets) {
   }
   if (yarn.has("weibull_modulus")) {
     spec.strength_scatter.weibull_modulus = yarn.member("weibull_modulus").nonNegativeNumber("");
+  }
+  if (yarn.has("strength_cv")) {
+    const ParamValue cv = yarn.member("strength_cv");
+    if (yarn.has("weibull_modulus")) {
+      cv.fail("either strength_cv or weibull_modulus, not both (remove one)");
+    }
+    spec.strength_scatter.coefficient_of_variation = cv.number(0.0, 1.0, "");
   }
   if (yarn.has("seed")) {
     spec.strength_scatter.seed = static_cast<unsigned long long>(

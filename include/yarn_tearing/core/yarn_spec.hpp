@@ -12,6 +12,10 @@ namespace yarn_tearing {
 struct StrengthScatter {
   /// Weibull modulus m [-] of the breaking-strain factor; 0 = no scatter. Typical yarns: 5..20.
   double weibull_modulus = 0.0;
+  /// Instead of the modulus: the coefficient of variation of the factor [-] (standard deviation
+  /// over mean, as yarn strength is usually reported; 0.05..0.15 for most yarns), in (0, 1]; the
+  /// Weibull modulus with that CV is used. 0 = use weibull_modulus. Not both.
+  double coefficient_of_variation = 0.0;
   /// Seed of the deterministic generator; the same seed gives the same factors on any platform.
   unsigned long long seed = 1;
 };

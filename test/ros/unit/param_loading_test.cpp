@@ -56,6 +56,19 @@ TEST(YarnSpecLoader, LoadsAValidYarn) {
   EXPECT_EQ(spec.strength_scatter.seed, 7ULL);
 }
 
+TEST(YarnSpecLoader, LoadsStrengthScatterAsACoefficientOfVariation) {
+  XmlRpc::XmlRpcValue yarn = validYarn();
+  yarn["strength_cv"] = 0.08;
+  EXPECT_DOUBLE_EQ(
+      loadYarnSpec(yarnParam(yarn), kNoPresets).strength_scatter.coefficient_of_variation, 0.08);
+  yarn["weibull_modulus"] = 10.0;
+  EXPECT_NE(loadError(yarn).find("strength_cv"), std::string::npos) << loadError(yarn);
+  yarn = validYarn();
+  yarn["strength_cv"] = 1.5;
+  EXPECT_NE(loadError(yarn).find("/node/yarns[0].strength_cv"), std::string::npos)
+      << loadError(yarn);
+}
+
 TEST(YarnSpecLoader, AcceptsIntegersForNumbers) {
   XmlRpc::XmlRpcValue yarn = validYarn();
   yarn["length"] = 1;
