@@ -27,11 +27,6 @@ class EdgeStretchState {
   /// edge right at its largest stretch from switching back and forth on round-off.
   bool wouldSwitch(std::size_t e, double m) const;
 
-  bool saturated(std::size_t e) const { return saturated_[e] != 0; }
-  /// Compliance term s = c / dt^2 [1/kg] of the compliant regime.
-  double compliantShift(std::size_t e) const { return compliant_shift_[e]; }
-  /// Largest stretch past the rest length [m].
-  double maxStretch(std::size_t e) const { return max_stretch_[e]; }
   /// S per edge [1/kg]: s, or 10^-6 s when saturated.
   const std::vector<double>& shift() const { return shift_; }
   /// B per edge [m]: L, or L + (1 - 10^-6) s_max when saturated.

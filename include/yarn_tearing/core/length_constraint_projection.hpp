@@ -74,8 +74,8 @@ class LengthConstraintProjection {
   std::vector<double> inverse_mass_;         ///< [1/kg]
   EdgeStretchState stretch_state_;           ///< compliant or held at the breaking length
   std::vector<Eigen::Vector3d> direction_;   ///< unit edge directions
-  std::vector<double> residual_;             ///< length - L - c T [m]
-  std::vector<double> limit_;                ///< L + c T [m]
+  std::vector<double> residual_;             ///< length - limit [m]
+  std::vector<double> limit_;                ///< B + S m (EdgeStretchState) [m]
   std::vector<double> multiplier_;           ///< accumulated multipliers T dt^2 [kg*m]
   std::vector<double> step_;                 ///< candidate multipliers of a pivoting pass [kg*m]
   std::vector<std::uint8_t> active_;         ///< edges in the active set
