@@ -10,7 +10,7 @@
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-ws="${repo}/ws"
+ws="${YARN_TEARING_WS:-${repo}/ws}"
 package="${ws}/src/yarn_tearing"
 
 mkdir -p "${ws}/src"

@@ -5,6 +5,8 @@
 #   2. core GoogleTest suite, Release and AddressSanitizer + UndefinedBehaviorSanitizer
 #   3. catkin build, ROS-layer unit tests and rostests
 #   4. plot_bag tests (python unittest)
+#   5. catkin_lint of the package (tools/check_catkin_lint.sh)
+#   6. install space and downstream C++ use (tools/test_install.sh)
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -24,6 +26,8 @@ run_logged format "${repo}/tools/check_format.sh"
 run_logged core "${repo}/tools/test_core.sh"
 run_logged ros "${repo}/tools/run_ros_tests.sh"
 run_logged plot /usr/bin/python3 -m unittest discover -s "${repo}/test/plot" -t "${repo}/test/plot"
+run_logged lint bash "${repo}/tools/check_catkin_lint.sh"
+run_logged install bash "${repo}/tools/test_install.sh"
 
 # One closing line over all suites (each suite above already failed the run if it failed).
 core_total=$(grep -ho "tests failed out of [0-9]*" "${logs}/core.log" | awk '{s += $5} END {print s + 0}')

@@ -40,21 +40,24 @@ YarnState toYarnState(const Simulator& simulator, const Yarn& yarn) {
 
 ros::Time simulatedStamp(double simulated_time) { return ros::Time(simulated_time); }
 
-YarnStateArray toYarnStateArray(const Simulator& simulator, const std::string& frame_id) {
+YarnStateArray toYarnStateArray(const Simulator& simulator, const std::string& frame_id,
+                                const ros::Time& stamp) {
   YarnStateArray array;
-  array.header.stamp = simulatedStamp(simulator.time());
+  array.header.stamp = stamp;
   array.header.frame_id = frame_id;
+  array.sim_time = simulator.time();
   for (const Yarn& yarn : simulator.scene().yarns) {
     array.yarns.push_back(toYarnState(simulator, yarn));
   }
   return array;
 }
 
-BreakEvent toBreakEventMsg(const TearEvent& event, const Scene& scene,
-                           const std::string& frame_id) {
+BreakEvent toBreakEventMsg(const TearEvent& event, const Scene& scene, const std::string& frame_id,
+                           const ros::Time& stamp) {
   BreakEvent msg;
-  msg.header.stamp = simulatedStamp(event.time);
+  msg.header.stamp = stamp;
   msg.header.frame_id = frame_id;
+  msg.sim_time = event.time;
   msg.yarn = scene.yarns.at(event.yarn).name;
   msg.edge = static_cast<std::int32_t>(event.edge);
   msg.vertex_a = static_cast<std::int32_t>(event.vertex_a);

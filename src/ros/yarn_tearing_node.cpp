@@ -42,6 +42,7 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
       inputs_(frames_),
       markers_(config.node.frame_id, config.node.marker_width),
       scheduler_(config.parameters.time_step, config.node.real_time_factor, config.node.max_lag),
+      stamps_(ros::Time::isSimTime() && config.node.publish_clock),
       publish_schedule_(config.node.publish_rate),
       diagnostics_(nh, private_nh),
       refusal_warnings_(kWarnPeriod) {
@@ -69,7 +70,7 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
 void YarnTearingNode::run() {
   ros::CallbackQueue& queue = *ros::getGlobalCallbackQueue();
   const bool simulated_rate = config_.node.publishesInSimulatedTime();
-  scheduler_.restart(wallSeconds(), simulator_.time());
+  restartPacing();
   publish_schedule_.restart(simulated_rate ? simulator_.time() : wallSeconds());
   while (ros::ok()) {
     queue.callAvailable();
@@ -138,7 +139,8 @@ void YarnTearingNode::stepOnce(double fraction) {
 
 void YarnTearingNode::publishBreakEvents() {
   for (const TearEvent& event : simulator_.takeTearEvents()) {
-    const BreakEvent msg = toBreakEventMsg(event, simulator_.scene(), config_.node.frame_id);
+    const BreakEvent msg =
+        toBreakEventMsg(event, simulator_.scene(), config_.node.frame_id, stampOf(event.time));
     breaks_pub_.publish(msg);
     markers_.addBreak(event.yarn, event.position);
     ROS_INFO(
@@ -151,12 +153,23 @@ void YarnTearingNode::publishBreakEvents() {
 
 void YarnTearingNode::publishState() {
   const Scene& scene = simulator_.scene();
+  const ros::Time stamp = stampOf(simulator_.time());
   if (states_pub_.getNumSubscribers() > 0) {
-    states_pub_.publish(toYarnStateArray(simulator_, config_.node.frame_id));
+    states_pub_.publish(toYarnStateArray(simulator_, config_.node.frame_id, stamp));
   }
   if (markers_pub_.getNumSubscribers() > 0) {
-    markers_pub_.publish(markers_.build(scene, simulatedStamp(simulator_.time())));
+    markers_pub_.publish(markers_.build(scene, stamp));
   }
+}
+
+void YarnTearingNode::restartPacing() {
+  const double wall_now = wallSeconds();
+  scheduler_.restart(wall_now, simulator_.time());
+  stamps_.synchronize(ros::Time::now(), wall_now);
+}
+
+ros::Time YarnTearingNode::stampOf(double sim_time) const {
+  return stamps_.stamp(sim_time, scheduler_, ros::Time::now());
 }
 
 void YarnTearingNode::publishClock() {
@@ -198,7 +211,7 @@ bool YarnTearingNode::onReset(std_srvs::Empty::Request& /*request*/,
   simulator_.reset();
   inputs_.clear();
   markers_.clearBreaks();
-  scheduler_.restart(wallSeconds(), simulator_.time());
+  restartPacing();
   publish_schedule_.restart(config_.node.publishesInSimulatedTime() ? simulator_.time()
                                                                     : wallSeconds());
   ROS_INFO("yarn_tearing_node: reset");
@@ -208,7 +221,7 @@ bool YarnTearingNode::onReset(std_srvs::Empty::Request& /*request*/,
 bool YarnTearingNode::onSetPaused(std_srvs::SetBool::Request& request,
                                   std_srvs::SetBool::Response& response) {
   if (paused_ && !request.data) {
-    scheduler_.restart(wallSeconds(), simulator_.time());
+    restartPacing();
   }
   paused_ = request.data;
   response.success = true;

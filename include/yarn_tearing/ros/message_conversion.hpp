@@ -13,15 +13,20 @@
 namespace yarn_tearing {
 namespace ros_layer {
 
-/// ROS time of a simulated instant [s] (simulated time starts at 0).
+/// The simulated instant `simulated_time` [s] as a ros::Time (for /clock; simulated time starts
+/// at 0).
 ros::Time simulatedStamp(double simulated_time);
 
 /// State of every yarn, with per-yarn local vertex and edge indices; positions, velocities and
-/// support forces are in `frame_id`; header.stamp is the simulated time.
-YarnStateArray toYarnStateArray(const Simulator& simulator, const std::string& frame_id);
+/// support forces are in `frame_id`; header.stamp = `stamp` (see StampClock), sim_time = the
+/// simulator's time.
+YarnStateArray toYarnStateArray(const Simulator& simulator, const std::string& frame_id,
+                                const ros::Time& stamp);
 
-/// One break event; header.stamp = simulated time of the break, position in `frame_id`.
-BreakEvent toBreakEventMsg(const TearEvent& event, const Scene& scene, const std::string& frame_id);
+/// One break event; header.stamp = `stamp` (see StampClock), sim_time = the simulated time of the
+/// break, position in `frame_id`.
+BreakEvent toBreakEventMsg(const TearEvent& event, const Scene& scene, const std::string& frame_id,
+                           const ros::Time& stamp);
 
 }  // namespace ros_layer
 }  // namespace yarn_tearing

@@ -26,6 +26,11 @@ class StepScheduler {
   /// possible (use a wall budget instead).
   std::uint64_t stepsDue(double wall_now, double sim_time);
 
+  /// Wall time [s] at which the schedule reaches simulated time `sim_time` [s] (paced only).
+  double wallTimeOf(double sim_time) const {
+    return anchor_wall_ + (sim_time - anchor_sim_) / real_time_factor_;
+  }
+
   /// Steps dropped so far because the backlog exceeded max_lag.
   std::uint64_t droppedSteps() const { return dropped_steps_; }
 

@@ -15,6 +15,7 @@
 #include "yarn_tearing/ros/rate_schedule.hpp"
 #include "yarn_tearing/ros/simulation_config.hpp"
 #include "yarn_tearing/ros/simulation_diagnostics.hpp"
+#include "yarn_tearing/ros/stamp_clock.hpp"
 #include "yarn_tearing/ros/step_scheduler.hpp"
 #include "yarn_tearing/ros/warning_throttle.hpp"
 
@@ -52,6 +53,10 @@ class YarnTearingNode {
   void publishBreakEvents();
   void publishState();
   void publishClock();
+  /// Anchors the step pacing and the stamps to now (start, reset, resume).
+  void restartPacing();
+  /// Stamp of simulated instant `sim_time` [s] (see StampClock).
+  ros::Time stampOf(double sim_time) const;
   /// Wall seconds [s] until the loop must wake up again.
   double idleTimeout() const;
   /// Pacing figures for the diagnostics.
@@ -67,6 +72,7 @@ class YarnTearingNode {
   InputHandler inputs_;
   MarkerBuilder markers_;
   StepScheduler scheduler_;
+  StampClock stamps_;
   RateSchedule publish_schedule_;  ///< wall or simulated seconds, see NodeSettings
   SimulationDiagnostics diagnostics_;
   WarningThrottle refusal_warnings_;

@@ -120,9 +120,10 @@ TEST(MarkerBuilder, StableIdsAndOneDeleteAllOnly) {
 TEST(MessageConversion, UsesPerYarnLocalIndices) {
   Simulator simulator(SimulationParameters{}, twoYarns());
   simulator.step();
-  const YarnStateArray states = toYarnStateArray(simulator, "world");
+  const YarnStateArray states = toYarnStateArray(simulator, "world", ros::Time(1.8e9));
   EXPECT_EQ(states.header.frame_id, "world");
-  EXPECT_DOUBLE_EQ(states.header.stamp.toSec(), simulator.time());
+  EXPECT_DOUBLE_EQ(states.header.stamp.toSec(), 1.8e9);
+  EXPECT_DOUBLE_EQ(states.sim_time, simulator.time());
   ASSERT_EQ(states.yarns.size(), 2U);
   const YarnState& b = states.yarns[1];
   EXPECT_EQ(b.positions.size(), 3U);
@@ -150,10 +151,11 @@ TEST(MessageConversion, BreakEventNamesTheYarn) {
   event.position = Eigen::Vector3d(0.1, 0.0, -0.2);
   event.time = 2.5;
   event.tension = 9.4;
-  const BreakEvent msg = toBreakEventMsg(event, simulator.scene(), "world");
+  const BreakEvent msg = toBreakEventMsg(event, simulator.scene(), "world", ros::Time(1.8e9));
   EXPECT_EQ(msg.yarn, simulator.scene().yarns[1].name);
   EXPECT_EQ(msg.header.frame_id, "world");
-  EXPECT_DOUBLE_EQ(msg.header.stamp.toSec(), 2.5);
+  EXPECT_DOUBLE_EQ(msg.header.stamp.toSec(), 1.8e9);
+  EXPECT_DOUBLE_EQ(msg.sim_time, 2.5);
   EXPECT_EQ(msg.edge, 1);
   EXPECT_EQ(msg.vertex_b, 2);
   EXPECT_DOUBLE_EQ(msg.position.z, -0.2);
