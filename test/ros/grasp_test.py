@@ -2,14 +2,11 @@
 """Through topics only: a grasped vertex follows a moving tf frame (broadcast here with tf2_ros)
 within a few mm, is reported as a support, and falls free again after release."""
 import math
-import threading
 import time
 import unittest
 
 import rospy
 import rostest
-import tf2_ros
-from geometry_msgs.msg import TransformStamped
 from yarn_tearing.msg import Grasp
 
 import yarn_rostest_support as support
@@ -26,29 +23,12 @@ class MovingGripper:
     """Broadcasts world -> gripper at 100 Hz moving on x = A sin(2 pi t / T) around CENTER."""
 
     def __init__(self):
-        self.broadcaster = tf2_ros.TransformBroadcaster()
         self.start = time.monotonic()
-        self.running = True
-        self.thread = threading.Thread(target=self.run, daemon=True)
-        self.thread.start()
+        self.frame = support.MovingFrame(GRIPPER_FRAME, lambda _: self.position(time.monotonic()))
 
     def position(self, wall_time):
         t = wall_time - self.start
         return (CENTER[0] + AMPLITUDE * math.sin(2.0 * math.pi * t / PERIOD), CENTER[1], CENTER[2])
-
-    def run(self):
-        while self.running and not rospy.is_shutdown():
-            x, y, z = self.position(time.monotonic())
-            transform = TransformStamped()
-            transform.header.stamp = rospy.Time.now()
-            transform.header.frame_id = "world"
-            transform.child_frame_id = GRIPPER_FRAME
-            transform.transform.translation.x = x
-            transform.transform.translation.y = y
-            transform.transform.translation.z = z
-            transform.transform.rotation.w = 1.0
-            self.broadcaster.sendTransform(transform)
-            time.sleep(0.01)
 
 
 class GraspTest(unittest.TestCase):
@@ -99,7 +79,7 @@ class GraspTest(unittest.TestCase):
         self.assertTrue(support.wait_until(lambda: not grasped(), timeout=5.0), "not released")
         self.assertEqual(list(support.find_yarn(states.latest(), yarn["name"]).support_vertices),
                          [0])
-        gripper.running = False
+        gripper.frame.stop()
 
 
 if __name__ == "__main__":

@@ -3,14 +3,12 @@
 listener transforms a yarn_states position into a frame that moves relative to the fixed frame
 (world -> base_link, broadcast here) at the message's stamp, and gets the position the motion
 predicts; sim_time carries the simulated time."""
-import threading
 import time
 import unittest
 
 import rospy
 import rostest
 import tf2_ros
-from geometry_msgs.msg import TransformStamped
 from visualization_msgs.msg import MarkerArray
 
 import yarn_rostest_support as support
@@ -25,25 +23,11 @@ class MovingBase:
     """Broadcasts world -> base_link at 100 Hz: x = SPEED * (t - start) in ROS time."""
 
     def __init__(self):
-        self.broadcaster = tf2_ros.TransformBroadcaster()
         self.start = rospy.Time.now().to_sec()
-        self.running = True
-        self.thread = threading.Thread(target=self.run, daemon=True)
-        self.thread.start()
+        self.frame = support.MovingFrame(BASE_FRAME, lambda stamp: (self.x(stamp.to_sec()), 0, 0))
 
     def x(self, stamp):
         return SPEED * (stamp - self.start)
-
-    def run(self):
-        while self.running and not rospy.is_shutdown():
-            transform = TransformStamped()
-            transform.header.stamp = rospy.Time.now()
-            transform.header.frame_id = "world"
-            transform.child_frame_id = BASE_FRAME
-            transform.transform.translation.x = self.x(transform.header.stamp.to_sec())
-            transform.transform.rotation.w = 1.0
-            self.broadcaster.sendTransform(transform)
-            time.sleep(0.01)
 
 
 class StampsInMovingFrameTest(unittest.TestCase):
@@ -85,7 +69,7 @@ class StampsInMovingFrameTest(unittest.TestCase):
                                latest.sim_time - first.sim_time, delta=0.05)
         self.assertTrue(support.wait_until(lambda: markers.latest() is not None, timeout=5.0))
         self.assertGreater(markers.latest().markers[0].header.stamp.to_sec(), base.start - 60.0)
-        base.running = False
+        base.frame.stop()
 
 
 if __name__ == "__main__":

@@ -102,3 +102,35 @@ def measured_rate(records):
     if len(records) < 2:
         return 0.0
     return (len(records) - 1) / (records[-1][0] - records[0][0])
+
+
+class MovingFrame:
+    """Broadcasts `parent` -> `child` through tf2 every `period` [s] until stop(): the
+    translation is `translation(stamp)` [m] for the transform's stamp (rospy.Time), no rotation."""
+
+    def __init__(self, child, translation, parent="world", period=0.01):
+        import tf2_ros
+
+        self._broadcaster = tf2_ros.TransformBroadcaster()
+        self._child, self._parent, self._period = child, parent, period
+        self._translation = translation
+        self._running = True
+        self._thread = threading.Thread(target=self._run, daemon=True)
+        self._thread.start()
+
+    def stop(self):
+        self._running = False
+
+    def _run(self):
+        from geometry_msgs.msg import TransformStamped
+
+        while self._running and not rospy.is_shutdown():
+            transform = TransformStamped()
+            transform.header.stamp = rospy.Time.now()
+            transform.header.frame_id = self._parent
+            transform.child_frame_id = self._child
+            t = transform.transform.translation
+            t.x, t.y, t.z = self._translation(transform.header.stamp)
+            transform.transform.rotation.w = 1.0
+            self._broadcaster.sendTransform(transform)
+            time.sleep(self._period)
