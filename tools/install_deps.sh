@@ -18,6 +18,8 @@ packages=(
   libvisualization-msgs-dev python3-visualization-msgs libstd-srvs-dev python3-std-srvs
   libros-rosgraph-msgs-dev python3-rosgraph-msgs libtf2-dev libtf2-ros-dev python3-tf2-ros
   libdiagnostic-updater-dev python3-diagnostic-msgs
+  # nodelet (the library, its headers, the `nodelet` manager/loader executable)
+  libnodelet-dev libnodeletlib-dev libnodeletlib-tools python3-nodelet
   # package checks (tools/check_catkin_lint.sh)
   catkin-lint
   # scripts (force_ramp, plot_bag)

@@ -5,7 +5,8 @@
 #   2. with nothing but `source <prefix>/setup.bash` in an empty environment: rospack finds the
 #      installed share folder, the messages and headers are there, the demo (node, force_ramp,
 #      demo_supervisor, launch files, configs) runs to both tears and records a bag, plot_bag
-#      (with its yarn_plotting module) draws it;
+#      (with its yarn_plotting module) draws it, and the nodelet (yarn_tearing_nodelet.launch)
+#      publishes yarn_states;
 #   3. builds the downstream package test/downstream/yarn_tearing_downstream, which links
 #      yarn_tearing_core through find_package(catkin COMPONENTS yarn_tearing) and runs a hanging
 #      yarn, once against the install space and once against the devel space ws/devel.
@@ -90,6 +91,15 @@ in_clean_env "${prefix}/setup.bash" "rosrun yarn_tearing plot_bag ${work}/demo.b
 for figure in filmstrip tension_strain stress_strain length; do
   [[ -s "${work}/figures/${figure}.png" ]] || fail "plot_bag wrote no ${figure}.png"
 done
+
+step "the nodelet from the install space (standalone)"
+in_clean_env "${prefix}/setup.bash" "
+  roslaunch yarn_tearing yarn_tearing_nodelet.launch output:=log >${work}/nodelet.log 2>&1 &
+  launch=\$!
+  trap 'kill -INT \$launch; wait \$launch || true' EXIT
+  for i in \$(seq 100); do rostopic list >/dev/null 2>&1 && break; sleep 0.2; done
+  timeout 30 rostopic echo -n 1 /yarn_states/sim_time" >"${work}/nodelet_echo.log" 2>&1 ||
+  { cat "${work}/nodelet_echo.log" "${work}/nodelet.log"; fail "no yarn_states from the nodelet"; }
 
 build_downstream() {
   local name="$1" setup="$2"

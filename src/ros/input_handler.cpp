@@ -94,6 +94,14 @@ void InputHandler::beforeStep(Simulator& simulator, double fraction) {
   }
 }
 
+std::map<std::uint32_t, std::string> InputHandler::graspFrames() const {
+  std::map<std::uint32_t, std::string> frames;
+  for (const auto& [vertex, target] : grasps_) {
+    frames.emplace(vertex, target.frame);
+  }
+  return frames;
+}
+
 void InputHandler::clear() {
   force_expiry_.clear();
   grasps_.clear();

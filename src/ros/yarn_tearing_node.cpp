@@ -45,7 +45,8 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
       stamps_(ros::Time::isSimTime() && config.node.publish_clock),
       publish_schedule_(config.node.publish_rate),
       diagnostics_(nh, private_nh),
-      refusal_warnings_(kWarnPeriod) {
+      refusal_warnings_(kWarnPeriod),
+      wrenches_(private_nh, tf_buffer_, config.node.frame_id) {
   states_pub_ = nh_.advertise<YarnStateArray>("yarn_states", kStateQueue);
   breaks_pub_ = nh_.advertise<BreakEvent>("break_events", kBreakQueue);
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("yarn_markers", kStateQueue);
@@ -68,11 +69,12 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
 }
 
 void YarnTearingNode::run() {
-  ros::CallbackQueue& queue = *ros::getGlobalCallbackQueue();
+  // A NodeHandle's queue is the global one unless the nodelet set its own (a ros::CallbackQueue).
+  auto& queue = dynamic_cast<ros::CallbackQueue&>(*nh_.getCallbackQueue());
   const bool simulated_rate = config_.node.publishesInSimulatedTime();
   restartPacing();
   publish_schedule_.restart(simulated_rate ? simulator_.time() : wallSeconds());
-  while (ros::ok()) {
+  while (ros::ok() && !stop_requested_) {
     queue.callAvailable();
     stepCycle();
     if (!simulated_rate && publish_schedule_.due(wallSeconds())) {
@@ -160,6 +162,7 @@ void YarnTearingNode::publishState() {
   if (markers_pub_.getNumSubscribers() > 0) {
     markers_pub_.publish(markers_.build(scene, stamp));
   }
+  wrenches_.publish(simulator_, inputs_.graspFrames(), stamp);
 }
 
 void YarnTearingNode::restartPacing() {

@@ -43,6 +43,8 @@ class InputHandler {
 
   std::size_t activeForces() const { return force_expiry_.size(); }
   std::size_t activeGrasps() const { return grasps_.size(); }
+  /// Grasped global vertex ids and the tf frame each follows.
+  std::map<std::uint32_t, std::string> graspFrames() const;
 
  private:
   struct GraspTarget {

@@ -6,6 +6,8 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <atomic>
+
 #include "yarn_tearing/AppliedForce.h"
 #include "yarn_tearing/Grasp.h"
 #include "yarn_tearing/core/simulator.hpp"
@@ -17,6 +19,7 @@
 #include "yarn_tearing/ros/simulation_diagnostics.hpp"
 #include "yarn_tearing/ros/stamp_clock.hpp"
 #include "yarn_tearing/ros/step_scheduler.hpp"
+#include "yarn_tearing/ros/support_wrench_publisher.hpp"
 #include "yarn_tearing/ros/warning_throttle.hpp"
 
 namespace yarn_tearing {
@@ -25,17 +28,22 @@ namespace ros_layer {
 /// The yarn_tearing_node: steps a Simulator at real_time_factor and connects it to ROS.
 ///
 /// Topics (relative to the node's namespace): subscribes applied_force, grasp; publishes
-/// yarn_states and yarn_markers at publish_rate, break_events (one message per break, right after
+/// yarn_states, yarn_markers and the holders' wrenches (~grasp_wrench/..., ~pin_wrench/...) at
+/// publish_rate, break_events (one message per break, right after
 /// the step that tore), yarn_materials (latched YAML), /clock when publish_clock, /diagnostics.
 /// Services: ~reset (std_srvs/Empty), ~set_paused (std_srvs/SetBool).
-/// Single-threaded: callbacks run between stepping cycles in run().
+/// Single-threaded: callbacks run between stepping cycles in run(). Shared by yarn_tearing_node
+/// (node_runner) and the nodelet (YarnTearingNodelet).
 class YarnTearingNode {
  public:
   /// Builds the simulator; throws std::invalid_argument when the core rejects the configuration.
   YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh, const SimulationConfig& config);
 
-  /// Steps, publishes and serves callbacks until ROS shuts down.
+  /// Steps, publishes and serves the callbacks of `nh`'s callback queue (the global one unless
+  /// set) until ROS shuts down or requestStop() is called.
   void run();
+  /// Makes run() return after its current cycle (thread-safe; for the nodelet).
+  void requestStop() { stop_requested_ = true; }
 
  private:
   void onAppliedForce(const AppliedForce::ConstPtr& msg);
@@ -76,6 +84,7 @@ class YarnTearingNode {
   RateSchedule publish_schedule_;  ///< wall or simulated seconds, see NodeSettings
   SimulationDiagnostics diagnostics_;
   WarningThrottle refusal_warnings_;
+  SupportWrenchPublisher wrenches_;
   ros::Publisher states_pub_;
   ros::Publisher breaks_pub_;
   ros::Publisher markers_pub_;
@@ -86,6 +95,7 @@ class YarnTearingNode {
   ros::ServiceServer reset_srv_;
   ros::ServiceServer pause_srv_;
   bool paused_ = false;
+  std::atomic<bool> stop_requested_{false};
 };
 
 }  // namespace ros_layer
