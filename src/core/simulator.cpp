@@ -1,11 +1,13 @@
 #include "yarn_tearing/core/simulator.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "yarn_tearing/core/explicit_forces.hpp"
 #include "yarn_tearing/core/material_response.hpp"
+#include "yarn_tearing/core/nonfinite_recovery.hpp"
 
 namespace yarn_tearing {
 namespace {
@@ -56,18 +58,24 @@ Simulator::Simulator(const SimulationParameters& parameters, Scene scene)
 
 void Simulator::reset() {
   scene_ = initial_scene_;
+  resetWorkspace();
+  support_force_.assign(scene_.vertices.size(), Eigen::Vector3d::Zero());
+  pending_events_.clear();
+  health_ = StepHealth{};
+  time_ = 0.0;
+  step_count_ = 0;
+}
+
+void Simulator::resetWorkspace() {
   const std::size_t n = scene_.vertices.size();
+  work_.projection = LengthConstraintProjection{};
+  work_.estimator = TensionEstimator{};
   work_.force.assign(n, Eigen::Vector3d::Zero());
   work_.start_position.assign(n, Eigen::Vector3d::Zero());
   work_.start_velocity.assign(n, Eigen::Vector3d::Zero());
   work_.constraint_tension.assign(scene_.edges.size(), 0.0);
   work_.gram.setTopology(scene_.edges, n);
   work_.gram.forceGeneralPath(parameters_.force_general_solver);
-  support_force_.assign(n, Eigen::Vector3d::Zero());
-  pending_events_.clear();
-  health_ = StepHealth{};
-  time_ = 0.0;
-  step_count_ = 0;
 }
 
 void Simulator::step() {
@@ -78,7 +86,27 @@ void Simulator::step() {
   updateMaterial();            // 5
   time_ += parameters_.time_step;
   ++step_count_;
+  const std::size_t events_before = pending_events_.size();
   tear();  // 6
+  restoreNonFiniteYarns(events_before);
+}
+
+void Simulator::restoreNonFiniteYarns(std::size_t first_event_of_step) {
+  health_.restored_yarns = nonFiniteYarns(scene_, support_force_);
+  if (health_.restored_yarns.empty()) return;
+  for (std::uint32_t yarn : health_.restored_yarns) {
+    restoreYarn(initial_scene_, yarn, scene_);
+    for (std::size_t v = 0; v < scene_.vertices.size(); ++v) {
+      if (scene_.vertices.yarn[v] == yarn) support_force_[v].setZero();
+    }
+    const auto of_yarn = [yarn](const TearEvent& event) { return event.yarn == yarn; };
+    pending_events_.erase(
+        std::remove_if(pending_events_.begin() + static_cast<std::ptrdiff_t>(first_event_of_step),
+                       pending_events_.end(), of_yarn),
+        pending_events_.end());
+  }
+  // The solvers' warm starts may hold the non-finite values of this step.
+  resetWorkspace();
 }
 
 void Simulator::accumulateForces() {
@@ -155,7 +183,7 @@ void Simulator::tear() {
   if (!parameters_.breaking_enabled) return;
   const std::vector<std::uint32_t>& torn = work_.tearing.collect(scene_);
   health_.breaks = static_cast<int>(torn.size());
-  work_.tearing.apply(scene_, time_, pending_events_);
+  work_.tearing.apply(scene_, time_, parameters_.time_step, pending_events_);
 }
 
 void Simulator::setAppliedForce(std::uint32_t vertex, const Eigen::Vector3d& force) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "yarn_tearing/core/state_at_tear.hpp"
+
 namespace yarn_tearing {
 namespace {
 
@@ -54,25 +56,10 @@ const std::vector<std::uint32_t>& Tearing::collect(const Scene& scene) {
   return collected_;
 }
 
-void Tearing::apply(Scene& scene, double time, std::vector<TearEvent>& events) {
+void Tearing::apply(Scene& scene, double time, double time_step, std::vector<TearEvent>& events) {
   EdgeSet& edges = scene.edges;
   for (std::uint32_t e : collected_) {
-    const Yarn& yarn = scene.yarns[edges.yarn[e]];
-    TearEvent event;
-    event.yarn = edges.yarn[e];
-    event.edge = e - yarn.first_edge;
-    event.vertex_a = edges.vertex_a[e] - yarn.first_vertex;
-    event.vertex_b = edges.vertex_b[e] - yarn.first_vertex;
-    event.position = 0.5 * (scene.vertices.position[edges.vertex_a[e]] +
-                            scene.vertices.position[edges.vertex_b[e]]);
-    event.time = time;
-    event.tension = edges.tension[e];
-    event.stress = edges.stress[e];
-    event.strain = edges.strain[e];
-    event.plastic_strain = edges.plastic_strain[e];
-    event.strain_rate = edges.strain_rate[e];
-    events.push_back(event);
-
+    events.push_back(tearEventOf(scene, e, time, time_step));
     edges.broken[e] = 1;
     edges.tension[e] = 0.0;
     edges.spring_tension[e] = 0.0;

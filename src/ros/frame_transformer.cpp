@@ -3,14 +3,51 @@
 #include <tf2/exceptions.h>
 
 #include <Eigen/Geometry>
+#include <sstream>
 
+#include "yarn_tearing/ros/clipped_text.hpp"
+#include "yarn_tearing/ros/input_bounds.hpp"
 #include "yarn_tearing/ros/input_rejected.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
+namespace {
 
-FrameTransformer::FrameTransformer(const tf2_ros::Buffer& buffer, std::string fixed_frame)
-    : buffer_(buffer), fixed_frame_(std::move(fixed_frame)) {}
+constexpr std::size_t kMaxTfReason = 160;  ///< [characters] of tf2's exception text quoted
+
+}  // namespace
+
+FrameTransformer::FrameTransformer(const tf2_ros::Buffer& buffer, std::string fixed_frame,
+                                   double frame_timeout)
+    : buffer_(buffer), fixed_frame_(std::move(fixed_frame)), frame_timeout_(frame_timeout) {}
+
+geometry_msgs::TransformStamped FrameTransformer::lookup(const std::string& frame,
+                                                         const ros::Time& stamp) const {
+  if (frame.size() > input_bounds::kMaxFrameName) {
+    throw InputRejected(RefusalReason::kUnknownFrame,
+                        "frame name '" + clipped(frame) + "' longer than " +
+                            std::to_string(input_bounds::kMaxFrameName) + " characters");
+  }
+  geometry_msgs::TransformStamped transform;
+  try {
+    transform = buffer_.lookupTransform(fixed_frame_, frame, stamp);
+  } catch (const tf2::TransformException& e) {
+    throw InputRejected(RefusalReason::kUnknownFrame, "cannot look up frame '" + clipped(frame) +
+                                                          "' in '" + fixed_frame_ +
+                                                          "': " + clipped(e.what(), kMaxTfReason));
+  }
+  const ros::Time updated = transform.header.stamp;
+  if (stamp.isZero() && frame_timeout_ > 0.0 && !updated.isZero()) {
+    const double age = (ros::Time::now() - updated).toSec();
+    if (age > frame_timeout_) {
+      std::ostringstream text;
+      text << "frame '" << clipped(frame) << "' last updated " << age << " s ago (frame_timeout "
+           << frame_timeout_ << " s)";
+      throw InputRejected(RefusalReason::kStaleFrame, text.str());
+    }
+  }
+  return transform;
+}
 
 Eigen::Vector3d FrameTransformer::rotateToFixedFrame(const Eigen::Vector3d& vector,
                                                      const std::string& frame,
@@ -18,28 +55,24 @@ Eigen::Vector3d FrameTransformer::rotateToFixedFrame(const Eigen::Vector3d& vect
   if (frame.empty() || frame == fixed_frame_) {
     return vector;
   }
-  try {
-    const geometry_msgs::Quaternion q =
-        buffer_.lookupTransform(fixed_frame_, frame, stamp).transform.rotation;
-    return Eigen::Quaterniond(q.w, q.x, q.y, q.z).normalized() * vector;
-  } catch (const tf2::TransformException& e) {
-    throw InputRejected("cannot transform from frame '" + frame + "' to '" + fixed_frame_ +
-                        "': " + e.what());
+  const geometry_msgs::Quaternion q = lookup(frame, stamp).transform.rotation;
+  const Eigen::Quaterniond rotation(q.w, q.x, q.y, q.z);
+  if (!rotation.coeffs().allFinite() || !(rotation.norm() > 0.0)) {
+    throw InputRejected(RefusalReason::kNotFinite,
+                        "frame '" + clipped(frame) + "' has no valid rotation");
   }
+  return rotation.normalized() * vector;
 }
 
 Eigen::Vector3d FrameTransformer::originInFixedFrame(const std::string& frame) const {
   if (frame == fixed_frame_) {
     return Eigen::Vector3d::Zero();
   }
-  try {
-    const geometry_msgs::Vector3 t =
-        buffer_.lookupTransform(fixed_frame_, frame, ros::Time(0)).transform.translation;
-    return Eigen::Vector3d(t.x, t.y, t.z);
-  } catch (const tf2::TransformException& e) {
-    throw InputRejected("cannot look up frame '" + frame + "' in '" + fixed_frame_ +
-                        "': " + e.what());
-  }
+  const geometry_msgs::Vector3 t = lookup(frame, ros::Time(0)).transform.translation;
+  const Eigen::Vector3d origin(t.x, t.y, t.z);
+  requireBoundedVector(origin, input_bounds::kMaxDistance,
+                       "origin of frame '" + clipped(frame) + "'", "m");
+  return origin;
 }
 
 }  // namespace ros_layer

@@ -1,16 +1,34 @@
 #include "yarn_tearing/ros/material_loader.hpp"
 
-#include <limits>
 #include <stdexcept>
 #include <vector>
 
+#include "yarn_tearing/ros/parameter_bounds.hpp"
 #include "yarn_tearing/ros/parameter_error.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
 namespace {
 
-constexpr double kUnbounded = std::numeric_limits<double>::max();
+namespace bounds = parameter_bounds;
+
+/// Fails unless Young's modulus is within bounds and every segment after the yield point is
+/// less steep than it (the curve bends over after yield, config/materials.yaml).
+void requireBendsOverAfterYield(const ParamValue& curve_param, const StressStrainCurve& curve) {
+  const double modulus = curve.youngsModulus();
+  if (!(modulus >= bounds::kMinYoungsModulus && modulus <= bounds::kMaxYoungsModulus)) {
+    curve_param.fail("a first segment (Young's modulus) of slope in [1e3, 1e13] Pa");
+  }
+  const std::vector<CurvePoint>& p = curve.points();
+  for (std::size_t i = 2; i < p.size(); ++i) {
+    const double slope = (p[i].stress - p[i - 1].stress) / (p[i].strain - p[i - 1].strain);
+    if (!(slope < modulus)) {
+      curve_param.fail("every segment after the yield point less steep than the first (E = " +
+                       std::to_string(modulus) + " Pa); segment " + std::to_string(i) +
+                       " has slope " + std::to_string(slope) + " Pa");
+    }
+  }
+}
 
 StressStrainCurve loadCurve(const ParamValue& curve) {
   const std::string allowed =
@@ -26,12 +44,14 @@ StressStrainCurve loadCurve(const ParamValue& curve) {
       curve.fail(allowed);
     }
     CurvePoint point;
-    point.strain = xy[0].number(-kUnbounded, kUnbounded, "");
-    point.stress = xy[1].number(-kUnbounded, kUnbounded, "Pa");
+    point.strain = xy[0].number(0.0, bounds::kMaxCurveStrain, "");
+    point.stress = xy[1].number(0.0, bounds::kMaxCurveStress, "Pa");
     points.push_back(point);
   }
   try {
-    return StressStrainCurve(std::move(points));
+    const StressStrainCurve loaded(std::move(points));
+    requireBendsOverAfterYield(curve, loaded);
+    return loaded;
   } catch (const std::invalid_argument& e) {
     curve.fail(allowed + " (" + e.what() + ")");
   }
@@ -45,10 +65,12 @@ Material loadMaterialMap(const ParamValue& map, const std::string& name, bool st
   }
   Material material;
   material.name = name;
-  material.density = map.member("density").positiveNumber("kg/m^3");
-  material.plastic_viscosity = map.has("plastic_viscosity")
-                                   ? map.member("plastic_viscosity").nonNegativeNumber("Pa*s")
-                                   : 0.0;
+  material.density =
+      map.member("density").number(bounds::kMinDensity, bounds::kMaxDensity, "kg/m^3");
+  material.plastic_viscosity =
+      map.has("plastic_viscosity")
+          ? map.member("plastic_viscosity").number(0.0, bounds::kMaxViscosity, "Pa*s")
+          : 0.0;
   material.curve = loadCurve(map.member("stress_strain"));
   try {
     material.validate();

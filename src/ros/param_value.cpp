@@ -22,9 +22,14 @@ void describeInto(XmlRpc::XmlRpcValue& value, std::ostringstream& out) {
     case XmlRpc::XmlRpcValue::TypeInt:
       out << static_cast<int>(value);
       break;
-    case XmlRpc::XmlRpcValue::TypeDouble:
-      out << static_cast<double>(value);
+    case XmlRpc::XmlRpcValue::TypeDouble: {
+      // "0.0", not "0": an integral double must not read like the integer it is not.
+      std::ostringstream number;
+      number << static_cast<double>(value);
+      const std::string text = number.str();
+      out << text << (text.find_first_of(".eEni") == std::string::npos ? ".0" : "");
       break;
+    }
     case XmlRpc::XmlRpcValue::TypeString:
       out << '\'' << static_cast<std::string>(value) << '\'';
       break;
@@ -178,6 +183,17 @@ Eigen::Vector3d ParamValue::vector3(const std::string& unit) const {
       fail(allowed);
     }
     v[i] = toDouble(value_[i]);
+  }
+  return v;
+}
+
+Eigen::Vector3d ParamValue::boundedVector3(double max_norm, const std::string& unit) const {
+  const Eigen::Vector3d v = vector3(unit);
+  if (!(v.norm() <= max_norm)) {
+    std::ostringstream allowed;
+    allowed << "a list of 3 finite numbers [x, y, z] of magnitude <= " << max_norm
+            << (unit.empty() ? std::string() : " [" + unit + "]");
+    fail(allowed.str());
   }
   return v;
 }

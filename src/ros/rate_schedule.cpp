@@ -15,6 +15,8 @@ RateSchedule::RateSchedule(double rate) : period_(1.0 / rate) {}
 
 void RateSchedule::restart(double now) { next_ = now; }
 
+void RateSchedule::restartAfterPeriod(double now) { next_ = now + period_; }
+
 bool RateSchedule::due(double now) {
   if (now < next_ - kPeriodSlack * period_) {
     return false;

@@ -1,13 +1,16 @@
 #include "yarn_tearing/ros/simulation_config.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "yarn_tearing/core/scene.hpp"
 #include "yarn_tearing/ros/param_value.hpp"
+#include "yarn_tearing/ros/parameter_bounds.hpp"
 #include "yarn_tearing/ros/parameter_error.hpp"
 #include "yarn_tearing/ros/yarn_spec_loader.hpp"
 
@@ -15,7 +18,7 @@ namespace yarn_tearing {
 namespace ros_layer {
 namespace {
 
-constexpr double kUnbounded = std::numeric_limits<double>::max();
+namespace bounds = parameter_bounds;
 
 /// Reads the private parameters of one node; missing parameters keep their defaults.
 class PrivateParams {
@@ -70,14 +73,19 @@ NodeSettings loadNodeSettings(const PrivateParams& params) {
   params.read("publish_clock", [&](const ParamValue& v) { node.publish_clock = v.boolean(); });
   params.read("max_lag", [&](const ParamValue& v) { node.max_lag = v.number(1.0e-3, 10.0, "s"); });
   params.read("marker_width",
-              [&](const ParamValue& v) { node.marker_width = v.nonNegativeNumber("m"); });
+              [&](const ParamValue& v) { node.marker_width = v.number(1.0e-6, 1.0, "m"); });
+  params.read("frame_timeout", [&](const ParamValue& v) {
+    node.frame_timeout = v.number(0.0, bounds::kMaxFrameTimeout, "s");
+  });
   return node;
 }
 
 SimulationParameters loadPhysics(const PrivateParams& params) {
   SimulationParameters p;
   params.read("time_step", [&](const ParamValue& v) { p.time_step = v.number(1.0e-7, 0.1, "s"); });
-  params.read("gravity", [&](const ParamValue& v) { p.gravity = v.vector3("m/s^2"); });
+  params.read("gravity", [&](const ParamValue& v) {
+    p.gravity = v.boundedVector3(bounds::kMaxGravity, "m/s^2");
+  });
   params.read("regularization",
               [&](const ParamValue& v) { p.regularization = v.number(0.0, 1.0, ""); });
   params.read("air_damping",
@@ -87,7 +95,7 @@ SimulationParameters loadPhysics(const PrivateParams& params) {
   params.read("constraint_tolerance",
               [&](const ParamValue& v) { p.constraint_tolerance = v.number(1.0e-15, 0.1, ""); });
   params.read("max_projection_iterations",
-              [&](const ParamValue& v) { p.max_projection_iterations = v.integer(1, 100000); });
+              [&](const ParamValue& v) { p.max_projection_iterations = v.integer(1, 10000); });
   params.read("projection_method",
               [&](const ParamValue& v) { p.projection_method = parseProjectionMethod(v); });
   params.read("breaking_enabled", [&](const ParamValue& v) { p.breaking_enabled = v.boolean(); });
@@ -110,11 +118,18 @@ std::vector<YarnSpec> loadYarns(const PrivateParams& params) {
   }
   std::vector<YarnSpec> specs;
   std::set<std::string> names;
+  std::size_t elements = 0;  // vertices + edges
   for (const ParamValue& entry : entries) {
     specs.push_back(loadYarnSpec(entry, presets));
     if (!names.insert(specs.back().name).second) {
       entry.member("name").fail("a name that no other yarn has");
     }
+    elements += 2 * static_cast<std::size_t>(specs.back().num_vertices) - 1;
+  }
+  if (elements > bounds::kSceneBudget) {
+    yarns.fail("yarns of at most " + std::to_string(bounds::kSceneBudget) +
+               " vertices + edges in all (the scene budget); these have " +
+               std::to_string(elements));
   }
   try {
     buildScene(specs);
@@ -122,6 +137,22 @@ std::vector<YarnSpec> loadYarns(const PrivateParams& params) {
     yarns.fail(std::string("yarns that build a scene (") + e.what() + ")");
   }
   return specs;
+}
+
+/// Air damping is explicit: c * dt must stay below the lightest yarn's mass per length, or the drag
+/// overshoots (reverses the velocity) and grows without bound.
+void requireStableDamping(const PrivateParams& params, const SimulationConfig& config) {
+  double lightest = std::numeric_limits<double>::infinity();  // [kg/m]
+  for (const YarnSpec& spec : config.yarns) {
+    lightest = std::min(lightest, spec.linearDensity());
+  }
+  const double limit = lightest / config.parameters.time_step;  // [N*s/m^2]
+  if (!(config.parameters.air_damping < limit)) {
+    std::ostringstream allowed;
+    allowed << "a number in [0, " << limit
+            << ") [N*s/m^2]: below the lightest yarn's mass per length / time_step (explicit drag)";
+    params.get("air_damping")->fail(allowed.str());
+  }
 }
 
 }  // namespace
@@ -132,6 +163,7 @@ SimulationConfig loadSimulationConfig(const ros::NodeHandle& private_nh) {
   config.node = loadNodeSettings(params);
   config.parameters = loadPhysics(params);
   config.yarns = loadYarns(params);
+  requireStableDamping(params, config);
   return config;
 }
 

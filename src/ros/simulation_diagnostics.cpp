@@ -3,22 +3,32 @@
 #include <algorithm>
 #include <cmath>
 
+#include "yarn_tearing/ros/clipped_text.hpp"
+
 namespace yarn_tearing {
 namespace ros_layer {
 namespace {
 
 constexpr double kSlowFraction = 0.9;  ///< achieved / target factor below which we warn
+/// Shortest window [s, wall] over which the achieved factor is measured: a window cut short by a
+/// reset or a pause holds too few steps to say more than the step granularity.
+constexpr double kMinWindow = 0.2;
+constexpr double kMinPeriod = 0.01;  ///< [s] shortest ~diagnostic_period honoured
 
 }  // namespace
 
 SimulationDiagnostics::SimulationDiagnostics(const ros::NodeHandle& nh,
                                              const ros::NodeHandle& private_nh)
-    : updater_(nh, private_nh) {
+    : updater_(nh, private_nh), schedule_(1.0 / std::max(updater_.getPeriod(), kMinPeriod)) {
   updater_.setHardwareID("none");
   updater_.add("simulation", this, &SimulationDiagnostics::report);
 }
 
-void SimulationDiagnostics::recordStep(const StepHealth& health) {
+void SimulationDiagnostics::recordStep(const StepHealth& health, const Scene& scene) {
+  for (std::uint32_t yarn : health.restored_yarns) {
+    ++restorations_;
+    last_restored_ = clipped(scene.yarns[yarn].name);
+  }
   ++steps_;
   max_iterations_ = std::max(max_iterations_, health.projection_iterations);
   max_violation_ = std::max(max_violation_, health.max_constraint_violation);
@@ -35,22 +45,38 @@ void SimulationDiagnostics::update(double wall_now, const PacingStatus& pacing) 
     window_wall_ = wall_now;
     window_sim_ = pacing.simulated_time;
   }
-  updater_.update();
+  if (!started_) {
+    schedule_.restart(wall_now);
+    started_ = true;
+  }
+  // Wall-timed, not ROS-timed (Updater::update), so that /diagnostics goes on when ROS time
+  // jumps back (a reset under /use_sim_time, a looping bag); a new restoration is said at once.
+  const bool new_error = restorations_ > 0 && !error_reported_;
+  if (schedule_.due(wall_now) || new_error) {
+    updater_.force_update();
+  }
 }
+
+void SimulationDiagnostics::restartWindow() { window_wall_ = -1.0; }
 
 void SimulationDiagnostics::report(diagnostic_updater::DiagnosticStatusWrapper& status) {
   const double wall = wall_now_ - window_wall_;
   const double simulated = pacing_.simulated_time - window_sim_;
-  if (wall > 0.0 && simulated >= 0.0) {
+  const bool measured = wall >= kMinWindow && simulated >= 0.0;
+  if (measured) {
     achieved_factor_ = simulated / wall;
+    window_wall_ = wall_now_;
+    window_sim_ = pacing_.simulated_time;
   }
-  window_wall_ = wall_now_;
-  window_sim_ = pacing_.simulated_time;
 
   const bool dropped = pacing_.dropped_steps > reported_dropped_;
-  const bool slow = !pacing_.paused && pacing_.target_real_time_factor > 0.0 &&
+  const bool slow = measured && !pacing_.paused && pacing_.target_real_time_factor > 0.0 &&
                     achieved_factor_ < kSlowFraction * pacing_.target_real_time_factor;
-  if (!finite_) {
+  error_reported_ = restorations_ > 0;
+  if (restorations_ > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR,
+                   "non-finite state: yarn '" + last_restored_ + "' restored to its initial state");
+  } else if (!finite_) {
     status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "non-finite step health");
   } else if (unconverged_ > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "length projection did not converge");
@@ -71,6 +97,7 @@ void SimulationDiagnostics::report(diagnostic_updater::DiagnosticStatusWrapper& 
   status.add("active forces", pacing_.active_forces);
   status.add("active grasps", pacing_.active_grasps);
   status.add("paused", pacing_.paused);
+  status.add("yarns restored from a non-finite state", restorations_);
 
   reported_dropped_ = pacing_.dropped_steps;
   steps_ = 0;
@@ -79,6 +106,7 @@ void SimulationDiagnostics::report(diagnostic_updater::DiagnosticStatusWrapper& 
   max_residual_ = 0.0;
   unconverged_ = 0;
   finite_ = true;
+  restorations_ = 0;
 }
 
 }  // namespace ros_layer

@@ -2,25 +2,39 @@
 
 #include <stdexcept>
 
+#include "yarn_tearing/ros/clipped_text.hpp"
 #include "yarn_tearing/ros/input_rejected.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
+namespace {
+
+constexpr std::size_t kMaxKnownList = 200;  ///< [characters] of the known yarn names quoted
+
+}  // namespace
 
 std::uint32_t lookupVertex(const Scene& scene, const std::string& yarn, int vertex) {
   const int index = scene.findYarn(yarn);
   if (index < 0) {
     std::string known;
     for (const Yarn& y : scene.yarns) {
-      known += (known.empty() ? "" : ", ") + y.name;
+      known += (known.empty() ? "" : ", ") + clipped(y.name);
+      if (known.size() > kMaxKnownList) {
+        known += ", ...";
+        break;
+      }
     }
-    throw InputRejected("unknown yarn '" + yarn + "' (known: " + known + ")");
+    throw InputRejected(RefusalReason::kUnknownYarn,
+                        "unknown yarn '" + clipped(yarn) + "' (known: " + known + ")");
   }
-  try {
-    return scene.globalVertex(static_cast<std::size_t>(index), vertex);
-  } catch (const std::out_of_range& e) {
-    throw InputRejected(e.what());
+  const auto n = static_cast<int>(scene.yarns[static_cast<std::size_t>(index)].num_vertices);
+  if (vertex < -n || vertex >= n) {
+    throw InputRejected(RefusalReason::kVertexOutOfRange,
+                        "vertex " + std::to_string(vertex) + " of yarn '" + clipped(yarn) +
+                            "' out of range [" + std::to_string(-n) + ", " + std::to_string(n - 1) +
+                            "]");
   }
+  return scene.globalVertex(static_cast<std::size_t>(index), vertex);
 }
 
 }  // namespace ros_layer

@@ -1,21 +1,34 @@
 #include "yarn_tearing/ros/warning_throttle.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace yarn_tearing {
 namespace ros_layer {
 
-WarningThrottle::WarningThrottle(double period) : period_(period) {}
+WarningThrottle::WarningThrottle(double period, std::size_t num_keys)
+    : period_(period),
+      last_report_(std::max<std::size_t>(num_keys, 1), -std::numeric_limits<double>::infinity()),
+      held_back_(last_report_.size(), 0),
+      last_held_(last_report_.size(), 0) {}
 
-bool WarningThrottle::shouldReport(const std::string& text, double now) {
-  const auto it = last_report_.find(text);
-  if (it != last_report_.end() && now - it->second < period_) {
+std::size_t WarningThrottle::index(std::size_t key) const {
+  return std::min(key, last_report_.size() - 1);
+}
+
+bool WarningThrottle::shouldReport(std::size_t key, double now) {
+  const std::size_t i = index(key);
+  if (now - last_report_[i] < period_) {
+    ++held_back_[i];
     return false;
   }
-  if (last_report_.size() >= kMaxTexts) {
-    last_report_.clear();
-  }
-  last_report_[text] = now;
+  last_report_[i] = now;
+  last_held_[i] = held_back_[i];
+  held_back_[i] = 0;
   return true;
 }
+
+std::uint64_t WarningThrottle::heldBack(std::size_t key) const { return last_held_[index(key)]; }
 
 }  // namespace ros_layer
 }  // namespace yarn_tearing

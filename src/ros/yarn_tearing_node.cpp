@@ -10,6 +10,7 @@
 #include <chrono>
 
 #include "yarn_tearing/YarnStateArray.h"
+#include "yarn_tearing/ros/clipped_text.hpp"
 #include "yarn_tearing/ros/materials_description.hpp"
 #include "yarn_tearing/ros/message_conversion.hpp"
 
@@ -20,9 +21,13 @@ namespace {
 constexpr double kWarnPeriod = 2.0;     ///< [s] between repeats of one refusal warning
 constexpr double kCyclePeriod = 0.005;  ///< [s] wall: longest sleep between stepping cycles
 constexpr double kStepBudget = 0.02;    ///< [s] wall: longest stepping before serving callbacks
-constexpr std::uint32_t kBreakQueue = 10000;  ///< break_events must never be dropped
+/// break_events must never be dropped: at least this, and at least the scene's edge count (each edge
+/// tears at most once between resets, so no burst can be longer).
+constexpr std::uint32_t kBreakQueue = 10000;
 constexpr std::uint32_t kStateQueue = 10;
 constexpr std::uint32_t kInputQueue = 100;
+
+constexpr std::size_t kNumReasons = static_cast<std::size_t>(RefusalReason::kCount);
 
 /// Monotonic wall time [s].
 double wallSeconds() {
@@ -38,17 +43,19 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
       private_nh_(private_nh),
       simulator_(config.parameters, config.yarns),
       tf_listener_(tf_buffer_),
-      frames_(tf_buffer_, config.node.frame_id),
+      frames_(tf_buffer_, config.node.frame_id, config.node.frame_timeout),
       inputs_(frames_),
       markers_(config.node.frame_id, config.node.marker_width),
       scheduler_(config.parameters.time_step, config.node.real_time_factor, config.node.max_lag),
       stamps_(ros::Time::isSimTime() && config.node.publish_clock),
       publish_schedule_(config.node.publish_rate),
       diagnostics_(nh, private_nh),
-      refusal_warnings_(kWarnPeriod),
+      refusal_warnings_(kWarnPeriod,
+                        static_cast<std::size_t>(WarningSource::kCount) * kNumReasons),
       wrenches_(private_nh, tf_buffer_, config.node.frame_id) {
   states_pub_ = nh_.advertise<YarnStateArray>("yarn_states", kStateQueue);
-  breaks_pub_ = nh_.advertise<BreakEvent>("break_events", kBreakQueue);
+  const auto edges = static_cast<std::uint32_t>(simulator_.scene().edges.size());
+  breaks_pub_ = nh_.advertise<BreakEvent>("break_events", std::max(kBreakQueue, edges));
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("yarn_markers", kStateQueue);
   materials_pub_ = nh_.advertise<std_msgs::String>("yarn_materials", 1, /*latch=*/true);
   if (config_.node.publish_clock) {
@@ -131,11 +138,31 @@ void YarnTearingNode::stepCycle() {
 void YarnTearingNode::stepOnce(double fraction) {
   inputs_.beforeStep(simulator_, fraction);
   simulator_.step();
-  diagnostics_.recordStep(simulator_.lastHealth());
+  diagnostics_.recordStep(simulator_.lastHealth(), simulator_.scene());
+  if (!simulator_.lastHealth().restored_yarns.empty()) {
+    reportRestoredYarns();
+  }
   publishBreakEvents();
   if (config_.node.publishesInSimulatedTime() && publish_schedule_.due(simulator_.time())) {
     publishClock();
     publishState();
+  }
+}
+
+void YarnTearingNode::reportRestoredYarns() {
+  const Scene& scene = simulator_.scene();
+  std::string names;
+  for (std::uint32_t yarn : simulator_.lastHealth().restored_yarns) {
+    inputs_.forgetYarn(scene, yarn);
+    names += (names.empty() ? "'" : ", '") + clipped(scene.yarns[yarn].name) + "'";
+  }
+  const std::size_t key = warningKey(WarningSource::kRestoredYarn, 0);
+  if (refusal_warnings_.shouldReport(key, wallSeconds())) {
+    ROS_ERROR(
+        "yarn_tearing_node: a step left non-finite values in yarn %s at t = %.4f s: restored to "
+        "its initial state, its forces and grasps cleared (%llu more such steps held back)",
+        names.c_str(), simulator_.time(),
+        static_cast<unsigned long long>(refusal_warnings_.heldBack(key)));
   }
 }
 
@@ -187,25 +214,30 @@ void YarnTearingNode::publishClock() {
 void YarnTearingNode::onAppliedForce(const AppliedForce::ConstPtr& msg) {
   try {
     inputs_.handleAppliedForce(*msg, simulator_);
-  } catch (const std::exception& e) {
-    warnRefused("applied_force", msg->yarn, msg->vertex, e.what());
+  } catch (const InputRejected& e) {
+    warnRefused(WarningSource::kAppliedForce, "applied_force", msg->vertex, e);
   }
 }
 
 void YarnTearingNode::onGrasp(const Grasp::ConstPtr& msg) {
   try {
     inputs_.handleGrasp(*msg, simulator_);
-  } catch (const std::exception& e) {
-    warnRefused("grasp", msg->yarn, msg->vertex, e.what());
+  } catch (const InputRejected& e) {
+    warnRefused(WarningSource::kGrasp, "grasp", msg->vertex, e);
   }
 }
 
-void YarnTearingNode::warnRefused(const std::string& topic, const std::string& yarn, int vertex,
-                                  const std::string& reason) {
-  const std::string text =
-      topic + " refused (yarn '" + yarn + "', vertex " + std::to_string(vertex) + "): " + reason;
-  if (refusal_warnings_.shouldReport(text, wallSeconds())) {
-    ROS_WARN("%s", text.c_str());
+std::size_t YarnTearingNode::warningKey(WarningSource source, std::size_t reason) {
+  return static_cast<std::size_t>(source) * kNumReasons + reason;
+}
+
+void YarnTearingNode::warnRefused(WarningSource source, const char* topic, int vertex,
+                                  const InputRejected& e) {
+  const std::size_t key = warningKey(source, static_cast<std::size_t>(e.reason()));
+  if (refusal_warnings_.shouldReport(key, wallSeconds())) {
+    ROS_WARN("%s refused (%s, vertex %d; %llu more of this reason held back): %s", topic,
+             reasonName(e.reason()), vertex,
+             static_cast<unsigned long long>(refusal_warnings_.heldBack(key)), e.what());
   }
 }
 
@@ -215,8 +247,12 @@ bool YarnTearingNode::onReset(std_srvs::Empty::Request& /*request*/,
   inputs_.clear();
   markers_.clearBreaks();
   restartPacing();
-  publish_schedule_.restart(config_.node.publishesInSimulatedTime() ? simulator_.time()
-                                                                    : wallSeconds());
+  // A reset never publishes at once: however many resets come, states keep publish_rate (in wall
+  // time the schedule simply goes on; in simulated time it starts one period after time 0).
+  if (config_.node.publishesInSimulatedTime()) {
+    publish_schedule_.restartAfterPeriod(simulator_.time());
+  }
+  diagnostics_.restartWindow();
   ROS_INFO("yarn_tearing_node: reset");
   return true;
 }
@@ -225,6 +261,9 @@ bool YarnTearingNode::onSetPaused(std_srvs::SetBool::Request& request,
                                   std_srvs::SetBool::Response& response) {
   if (paused_ && !request.data) {
     restartPacing();
+  }
+  if (paused_ != static_cast<bool>(request.data)) {
+    diagnostics_.restartWindow();
   }
   paused_ = request.data;
   response.success = true;

@@ -39,7 +39,7 @@ class BagRecorder:
         self.breaks = []
         self.first_state = self.last_state = None  # [s] header.stamp
         self.subscribers = [
-            rospy.Subscriber(name, cls, self.write, callback_args=name, queue_size=1000)
+            rospy.Subscriber(name, cls, self.write, callback_args=name, queue_size=10000)
             for name, cls in self.TOPICS]
 
     def write(self, msg, name):

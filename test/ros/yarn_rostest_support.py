@@ -54,7 +54,7 @@ class TopicRecorder:
     def __init__(self, topic, message_type):
         self._lock = threading.Lock()
         self._records = []
-        self._subscriber = rospy.Subscriber(topic, message_type, self._on_message, queue_size=1000)
+        self._subscriber = rospy.Subscriber(topic, message_type, self._on_message, queue_size=10000)
 
     def _on_message(self, msg):
         with self._lock:

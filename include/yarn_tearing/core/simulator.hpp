@@ -25,7 +25,10 @@ class Simulator {
   /// Advances the simulation by parameters().time_step. The stages, in order:
   /// 1 accumulate forces, 2 predict (symplectic Euler), 3 project length constraints,
   /// 4 estimate tensions, 5 update material (strain limit, yield), 6 tear (collected, then
-  /// applied).
+  /// applied). A step that leaves a non-finite value in a yarn (inputs past every documented
+  /// bound) restores that yarn to its initial state (restoreYarn(): untorn, at rest, its forces
+  /// and grasps cleared), drops that yarn's events of this step, and lists it in
+  /// lastHealth().restored_yarns; the other yarns go on.
   void step();
 
   /// Back to the initial scene and time 0; applied forces, grasps and pending events cleared.
@@ -59,6 +62,10 @@ class Simulator {
   void estimateTensions();
   void updateMaterial();
   void tear();
+  /// Restores the yarns this step left non-finite; `first_event_of_step` indexes pending_events_.
+  void restoreNonFiniteYarns(std::size_t first_event_of_step);
+  /// Sizes the scratch arrays for scene_ and forgets the solvers' warm starts.
+  void resetWorkspace();
 
   SimulationParameters parameters_;
   Scene initial_scene_;

@@ -1,5 +1,8 @@
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 namespace yarn_tearing {
 
 /// Numerical health of one step.
@@ -9,6 +12,9 @@ struct StepHealth {
   bool projection_converged = true;       ///< violation within constraint_tolerance
   double tension_residual = 0.0;          ///< |A T - b| / |b| of the tension least squares [-]
   int breaks = 0;                         ///< edges torn in this step
+  /// Yarns (scene indices) this step left with a non-finite value, restored to their initial
+  /// state (Simulator::step); empty in a healthy step.
+  std::vector<std::uint32_t> restored_yarns;
 };
 
 }  // namespace yarn_tearing

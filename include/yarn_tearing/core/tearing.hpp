@@ -17,8 +17,9 @@ class Tearing {
  public:
   /// Global ids of the edges to tear this step (ordered by edge id).
   const std::vector<std::uint32_t>& collect(const Scene& scene);
-  /// Tears the collected edges and appends one event each (time = `time` [s]).
-  void apply(Scene& scene, double time, std::vector<TearEvent>& events);
+  /// Tears the collected edges and appends one event each (time = `time` [s]; the state each
+  /// reports follows tearEventOf(), `time_step` [s] the step's Δt).
+  void apply(Scene& scene, double time, double time_step, std::vector<TearEvent>& events);
 
  private:
   std::uint32_t findRoot(std::uint32_t v);

@@ -9,6 +9,8 @@
 #include "yarn_tearing/Grasp.h"
 #include "yarn_tearing/core/simulator.hpp"
 #include "yarn_tearing/ros/frame_transformer.hpp"
+#include "yarn_tearing/ros/input_rejected.hpp"
+#include "yarn_tearing/ros/warning_throttle.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
@@ -18,21 +20,25 @@ namespace ros_layer {
 ///
 /// Forces act until replaced for the same vertex, or for `duration` simulated seconds when > 0; a
 /// zero force clears. A grasped vertex is kinematic and follows the origin of its target frame,
-/// looked up once per stepping cycle and interpolated linearly over the cycle's steps.
+/// looked up once per stepping cycle and interpolated linearly over the cycle's steps. Forces and
+/// targets past input_bounds.hpp are refused, so a step never sees one.
 class InputHandler {
  public:
   /// `frames` must outlive this object.
   explicit InputHandler(const FrameTransformer& frames);
 
-  /// Applies an applied_force message; throws InputRejected (non-finite values, unknown yarn,
-  /// vertex out of range, negative duration, unresolvable frame), leaving everything unchanged.
+  /// Applies an applied_force message; throws InputRejected (non-finite values, a force past
+  /// input_bounds::kMaxForce, unknown yarn, vertex out of range, a duration outside [0, 1e9] s,
+  /// unresolvable or stale frame), leaving everything unchanged.
   void handleAppliedForce(const AppliedForce& msg, Simulator& simulator);
   /// Grasps or releases a vertex; throws InputRejected (unknown yarn or vertex, empty or
-  /// unresolvable target frame, releasing a vertex that is not grasped).
+  /// unresolvable or stale target frame, or one past input_bounds::kMaxDistance; releasing a
+  /// vertex that is not grasped).
   void handleGrasp(const Grasp& msg, Simulator& simulator);
 
-  /// Before a cycle of steps: looks up the grasp targets (a failing lookup keeps the last target
-  /// and warns, throttled).
+  /// Before a cycle of steps: looks up the grasp targets. A failing lookup keeps the last target:
+  /// a stale frame (not updated for frame_timeout) is reported once per grasp until it is updated
+  /// again, other failures are warned throttled per reason.
   void beginCycle();
   /// Before each step: clears lapsed forces and moves grasped vertices `fraction` (0..1] of the way
   /// from the previous cycle's target to this cycle's.
@@ -40,6 +46,8 @@ class InputHandler {
 
   /// Forgets all forces and grasps (the simulator has been reset).
   void clear();
+  /// Forgets the forces and grasps on the vertices of yarn `yarn` (restored by the simulator).
+  void forgetYarn(const Scene& scene, std::uint32_t yarn);
 
   std::size_t activeForces() const { return force_expiry_.size(); }
   std::size_t activeGrasps() const { return grasps_.size(); }
@@ -53,11 +61,16 @@ class InputHandler {
     Eigen::Vector3d from;  ///< target at the start of the cycle [m]
     Eigen::Vector3d to;    ///< target at the end of the cycle [m]
     bool fresh = true;     ///< grasped during the last cycle: `from` is the vertex position
+    bool stale = false;    ///< its frame's staleness has been reported
   };
+
+  /// Warns that a grasp keeps its last target because its frame lookup failed with `e`.
+  void reportHeldTarget(GraspTarget& target, const InputRejected& e);
 
   const FrameTransformer& frames_;
   std::map<std::uint32_t, double> force_expiry_;  ///< vertex -> simulated expiry time [s] (inf)
   std::map<std::uint32_t, GraspTarget> grasps_;   ///< vertex -> holder
+  WarningThrottle target_warnings_;               ///< per RefusalReason
 };
 
 }  // namespace ros_layer

@@ -21,6 +21,10 @@ struct NodeSettings {
   double max_lag = 0.25;
   /// Smallest drawn width of yarn segments in yarn_markers [m] (real yarns are thinner).
   double marker_width = 0.002;
+  /// A tf frame whose latest transform is older than this [s, ROS time] is stale: refused as a
+  /// force's frame or a new grasp's target; a grasp whose frame goes stale holds its last target
+  /// and is reported once. 0 = never stale.
+  double frame_timeout = 1.0;
 
   /// True when publish_rate counts simulated seconds.
   bool publishesInSimulatedTime() const { return real_time_factor == 0.0 || publish_clock; }

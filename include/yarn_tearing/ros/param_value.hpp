@@ -40,6 +40,8 @@ class ParamValue {
   std::string string(bool allow_empty) const;
   /// A list of 3 finite numbers.
   Eigen::Vector3d vector3(const std::string& unit) const;
+  /// A list of 3 finite numbers whose norm is at most `max_norm` (in `unit`).
+  Eigen::Vector3d boundedVector3(double max_norm, const std::string& unit) const;
   /// A list of integers.
   std::vector<int> integerList() const;
 

@@ -12,6 +12,8 @@ class RateSchedule {
 
   /// The next deadline is `now` [s] (due at once).
   void restart(double now);
+  /// The next deadline is one period after `now` [s] (a restart that must not publish at once).
+  void restartAfterPeriod(double now);
   /// True when `now` [s] reached the deadline, which then moves on by one period.
   bool due(double now);
   /// Seconds from `now` until the deadline (0 when due).

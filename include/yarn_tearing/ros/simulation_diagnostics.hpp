@@ -4,8 +4,11 @@
 #include <ros/node_handle.h>
 
 #include <cstdint>
+#include <string>
 
+#include "yarn_tearing/core/scene.hpp"
 #include "yarn_tearing/core/step_health.hpp"
+#include "yarn_tearing/ros/rate_schedule.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
@@ -20,23 +23,31 @@ struct PacingStatus {
   std::size_t active_grasps = 0;
 };
 
-/// Publishes /diagnostics (diagnostic_updater, period ~diagnostic_period, default 1 s) with the
-/// worst StepHealth since the last report and the real-time factor achieved over that window.
+/// Publishes /diagnostics (diagnostic_updater, period ~diagnostic_period [s, wall], default 1 s)
+/// with the worst StepHealth since the last report and the real-time factor achieved over that
+/// window. The period is kept in wall time, so reports go on through resets and ROS-time jumps.
 /// Warns when the projection did not converge, steps were dropped or the achieved factor is below
-/// 90 % of the target; errors when a health value is not finite.
+/// 90 % of the target (measured since the last report, reset or pause/resume, over >= 0.2 s);
+/// errors when a health value is not finite or a yarn was restored from a non-finite state (that
+/// report goes out at once).
 class SimulationDiagnostics {
  public:
   SimulationDiagnostics(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
 
-  /// Accumulates one step's health.
-  void recordStep(const StepHealth& health);
+  /// Accumulates one step's health (`scene` names the restored yarns).
+  void recordStep(const StepHealth& health, const Scene& scene);
   /// Publishes when a period has passed; `wall_now` [s] (monotonic) measures the achieved factor.
   void update(double wall_now, const PacingStatus& pacing);
+  /// Starts a new window of the achieved real-time factor at the next update (reset, pause,
+  /// resume: simulated time jumped or stood still on purpose).
+  void restartWindow();
 
  private:
   void report(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   diagnostic_updater::Updater updater_;
+  RateSchedule schedule_;  ///< wall seconds
+  bool started_ = false;
   PacingStatus pacing_;
   // Accumulated since the last report.
   std::uint64_t steps_ = 0;
@@ -45,6 +56,9 @@ class SimulationDiagnostics {
   double max_residual_ = 0.0;   ///< [-]
   std::uint64_t unconverged_ = 0;
   bool finite_ = true;
+  std::uint64_t restorations_ = 0;  ///< yarns restored from a non-finite state
+  std::string last_restored_;       ///< name of the last one (clipped)
+  bool error_reported_ = false;     ///< the last report said ERROR for restorations
   // Window of the achieved real-time factor.
   double window_wall_ = -1.0;     ///< [s]
   double window_sim_ = 0.0;       ///< [s]

@@ -1,27 +1,36 @@
 #pragma once
 
-#include <map>
-#include <string>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace yarn_tearing {
 namespace ros_layer {
 
-/// Throttles warnings per distinct text: each different reason is reported at once, repeats of
-/// the same text at most once per period. (ROS_WARN_THROTTLE throttles per call site, which would
-/// hide every reason but the first.) Free of ROS; times are plain seconds.
+/// Throttles warnings per reason from a fixed set of `num_keys` (e.g. topic x RefusalReason):
+/// the first of each key is reported at once, then at most one per period, with the count of
+/// the ones held back in between. Memory is fixed however many different messages arrive
+/// (ROS_WARN_THROTTLE throttles per call site, which would hide every reason but the first).
+/// Free of ROS; times are plain seconds.
 class WarningThrottle {
  public:
-  /// `period` [s] between two reports of the same text.
-  explicit WarningThrottle(double period);
+  /// `period` [s] between two reports of the same key; keys are 0 .. num_keys - 1.
+  WarningThrottle(double period, std::size_t num_keys);
 
-  /// True when `text` should be reported at `now` [s].
-  bool shouldReport(const std::string& text, double now);
+  /// True when a warning of `key` should be reported at `now` [s]; otherwise counts it as held
+  /// back. Keys past num_keys share the last one.
+  bool shouldReport(std::size_t key, double now);
+  /// Warnings of `key` held back before the one just reported (valid right after shouldReport()
+  /// returned true).
+  std::uint64_t heldBack(std::size_t key) const;
 
  private:
-  static constexpr std::size_t kMaxTexts = 1000;  ///< forget all texts past this many
+  std::size_t index(std::size_t key) const;
 
   double period_;
-  std::map<std::string, double> last_report_;  ///< text -> time of its last report [s]
+  std::vector<double> last_report_;       ///< per key: time of its last report [s] (-inf)
+  std::vector<std::uint64_t> held_back_;  ///< per key: held back since that report
+  std::vector<std::uint64_t> last_held_;  ///< per key: held back before that report
 };
 
 }  // namespace ros_layer

@@ -46,11 +46,17 @@ class YarnTearingNode {
   void requestStop() { stop_requested_ = true; }
 
  private:
+  /// What a throttled warning is about: one throttle key per source and reason.
+  enum class WarningSource : std::size_t { kAppliedForce, kGrasp, kRestoredYarn, kCount };
+
   void onAppliedForce(const AppliedForce::ConstPtr& msg);
   void onGrasp(const Grasp::ConstPtr& msg);
-  /// Warns (throttled per distinct text) that an input message was refused.
-  void warnRefused(const std::string& topic, const std::string& yarn, int vertex,
-                   const std::string& reason);
+  /// Warns, throttled per topic and reason, that an input message was refused.
+  /// Throttle key of a source and a reason (index of RefusalReason; 0 for kRestoredYarn).
+  static std::size_t warningKey(WarningSource source, std::size_t reason);
+  void warnRefused(WarningSource source, const char* topic, int vertex, const InputRejected& e);
+  /// After a step that restored yarns: forgets their inputs, logs one error (throttled).
+  void reportRestoredYarns();
   bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
   bool onSetPaused(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
 

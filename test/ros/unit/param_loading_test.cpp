@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "xmlrpc_builders.hpp"
 #include "yarn_tearing/ros/material_loader.hpp"
@@ -22,6 +24,15 @@ using testing::validYarn;
 const ParamValue kNoPresets("/node/materials", XmlRpc::XmlRpcValue());
 
 ParamValue yarnParam(const XmlRpc::XmlRpcValue& yarn) { return ParamValue("/node/yarns[0]", yarn); }
+
+/// A copy of the map `map` without `key` (this XmlRpc has no deleteMember).
+XmlRpc::XmlRpcValue withoutKey(XmlRpc::XmlRpcValue map, const std::string& key) {
+  XmlRpc::XmlRpcValue copy;
+  for (auto& member : map) {
+    if (member.first != key) copy[member.first] = member.second;
+  }
+  return copy;
+}
 
 /// what() of the ParameterError that loading `yarn` throws ("" when none).
 std::string loadError(const XmlRpc::XmlRpcValue& yarn, const ParamValue& presets = kNoPresets) {
@@ -81,7 +92,56 @@ TEST(YarnSpecLoader, ErrorNamesParameterValueAndAllowedRange) {
   const std::string error = loadError(yarn);
   EXPECT_NE(error.find("/node/yarns[0].radius"), std::string::npos) << error;
   EXPECT_NE(error.find("-0.5"), std::string::npos) << error;
-  EXPECT_NE(error.find("> 0 [m]"), std::string::npos) << error;
+  EXPECT_NE(error.find("in [1e-07, 1] [m]"), std::string::npos) << error;
+}
+
+/// The eight parameter values that passed validation and poisoned the state: each is
+/// refused naming its parameter and the bound.
+TEST(YarnSpecLoader, RefusesValuesPastThePhysicalBounds) {
+  const std::vector<std::pair<std::string, XmlRpc::XmlRpcValue>> cases = {
+      {"radius", 1.0e-200},
+      {"radius", 1.0e300},
+      {"length", 1.0e-300},
+      {"length", 1.0e300},
+      {"start", list({1.0e308, 0.0, 0.0})},
+      {"direction", list({1.0e300, 0.0, 0.0})},
+      {"end_mass", 1.0e300},
+      {"weibull_modulus", 1.0e-300},
+      {"tex", 1.0e300},
+  };
+  for (const auto& [key, value] : cases) {
+    XmlRpc::XmlRpcValue yarn = validYarn();
+    if (key == "tex") yarn = withoutKey(yarn, "radius");
+    yarn[key] = value;
+    const std::string error = loadError(yarn);
+    EXPECT_NE(error.find("/node/yarns[0]." + key), std::string::npos) << key << ": " << error;
+  }
+  XmlRpc::XmlRpcValue far = validYarn();  // start in bounds, but the end 1e4 m past them
+  far["start"] = list({9.0e3, 0.0, 0.0});
+  far["direction"] = list({1.0, 0.0, 0.0});
+  far["length"] = 2.0e3;
+  EXPECT_NE(loadError(far).find("/node/yarns[0].length"), std::string::npos) << loadError(far);
+  XmlRpc::XmlRpcValue fine = validYarn();  // segments under 1 um
+  fine["length"] = 1.0e-3;
+  fine["num_vertices"] = 10000;
+  EXPECT_NE(loadError(fine).find("num_vertices"), std::string::npos) << loadError(fine);
+}
+
+TEST(YarnSpecLoader, StartAndDirectionAreRequired) {
+  for (const char* key : {"start", "direction"}) {
+    XmlRpc::XmlRpcValue yarn = validYarn();
+    yarn = withoutKey(yarn, key);
+    EXPECT_NE(loadError(yarn).find(std::string("key '") + key + "'"), std::string::npos)
+        << loadError(yarn);
+  }
+}
+
+TEST(YarnSpecLoader, IntegralDoubleIsShownAsADouble) {
+  // "seed = 0: expected an integer" contradicted itself: the value was 0.0.
+  XmlRpc::XmlRpcValue yarn = validYarn();
+  yarn["seed"] = 0.0;
+  EXPECT_NE(loadError(yarn).find("seed = 0.0: expected an integer"), std::string::npos)
+      << loadError(yarn);
 }
 
 TEST(YarnSpecLoader, RejectsWrongTypes) {
@@ -127,6 +187,34 @@ TEST(YarnSpecLoader, RejectsZeroDirection) {
   XmlRpc::XmlRpcValue yarn = validYarn();
   yarn["direction"] = list({0.0, 0.0, 0.0});
   EXPECT_NE(loadError(yarn).find("direction"), std::string::npos);
+}
+
+TEST(MaterialLoader, RefusesDensityCurveAndViscosityPastTheBounds) {
+  XmlRpc::XmlRpcValue material = inlineMaterial();
+  material["density"] = 1.0e-300;
+  XmlRpc::XmlRpcValue yarn = validYarn();
+  yarn["material"] = material;
+  EXPECT_NE(loadError(yarn).find("material.density"), std::string::npos) << loadError(yarn);
+  material = inlineMaterial();
+  material["plastic_viscosity"] = 1.0e300;
+  yarn["material"] = material;
+  EXPECT_NE(loadError(yarn).find("plastic_viscosity"), std::string::npos) << loadError(yarn);
+  material = inlineMaterial();
+  material["stress_strain"] =
+      list({list({0.0, 0.0}), list({1.0e-300, 1.0e8}), list({0.05, 3.0e8})});
+  yarn["material"] = material;
+  EXPECT_NE(loadError(yarn).find("stress_strain"), std::string::npos) << loadError(yarn);
+}
+
+TEST(MaterialLoader, RefusesACurveThatStiffensAfterYield) {
+  // config/materials.yaml: every segment after the yield point must be less steep than E.
+  XmlRpc::XmlRpcValue material = inlineMaterial();
+  material["stress_strain"] = list({list({0.0, 0.0}), list({0.01, 1.0e8}), list({0.02, 5.0e8})});
+  XmlRpc::XmlRpcValue yarn = validYarn();
+  yarn["material"] = material;
+  const std::string error = loadError(yarn);
+  EXPECT_NE(error.find("material.stress_strain"), std::string::npos) << error;
+  EXPECT_NE(error.find("less steep"), std::string::npos) << error;
 }
 
 TEST(MaterialLoader, LooksUpPresetsByName) {

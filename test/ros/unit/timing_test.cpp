@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "yarn_tearing/ros/clipped_text.hpp"
 #include "yarn_tearing/ros/rate_schedule.hpp"
 #include "yarn_tearing/ros/step_scheduler.hpp"
 #include "yarn_tearing/ros/warning_throttle.hpp"
@@ -65,12 +66,24 @@ TEST(RateSchedule, ToleratesRoundingOfSummedSteps) {
   EXPECT_EQ(published, 50);
 }
 
-TEST(WarningThrottle, ReportsEachTextOncePerPeriod) {
-  WarningThrottle throttle(2.0);
-  EXPECT_TRUE(throttle.shouldReport("unknown yarn 'x'", 0.0));
-  EXPECT_TRUE(throttle.shouldReport("vertex 999 out of range", 0.1));
-  EXPECT_FALSE(throttle.shouldReport("unknown yarn 'x'", 1.0));
-  EXPECT_TRUE(throttle.shouldReport("unknown yarn 'x'", 2.5));
+TEST(WarningThrottle, ReportsEachReasonOncePerPeriodAndCountsTheRest) {
+  WarningThrottle throttle(2.0, 3);
+  EXPECT_TRUE(throttle.shouldReport(0, 0.0));
+  EXPECT_TRUE(throttle.shouldReport(1, 0.1));
+  for (int i = 0; i < 9999; ++i) {
+    EXPECT_FALSE(throttle.shouldReport(0, 0.2 + 1.0e-4 * i));
+  }
+  EXPECT_TRUE(throttle.shouldReport(0, 2.5));
+  EXPECT_EQ(throttle.heldBack(0), 9999u);
+  EXPECT_TRUE(throttle.shouldReport(2, 2.5));
+  EXPECT_FALSE(throttle.shouldReport(7, 2.6));  // past the set: shares the last key
+}
+
+TEST(ClippedText, ClipsLongNamesAndKeepsShortOnes) {
+  EXPECT_EQ(clipped("yarn"), "yarn");
+  const std::string clip = clipped(std::string(200000, 'x'));
+  EXPECT_LE(clip.size(), kMaxQuotedName + 20);
+  EXPECT_NE(clip.find("200000 chars"), std::string::npos) << clip;
 }
 
 }  // namespace

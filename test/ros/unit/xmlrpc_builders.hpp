@@ -39,6 +39,8 @@ inline XmlRpc::XmlRpcValue validYarn(const std::string& name = "a") {
   yarn["radius"] = 1.0e-4;
   yarn["length"] = 0.1;
   yarn["num_vertices"] = 5;
+  yarn["start"] = list({0.0, 0.0, 0.0});
+  yarn["direction"] = list({0.0, 0.0, -1.0});
   yarn["pinned"] = list({0});
   return yarn;
 }

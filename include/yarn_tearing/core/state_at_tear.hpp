@@ -1,0 +1,26 @@
+#pragma once
+
+#include <cstddef>
+
+#include "yarn_tearing/core/scene.hpp"
+#include "yarn_tearing/core/tear_event.hpp"
+
+namespace yarn_tearing {
+
+/// The break event of an edge that tears now, reporting the edge's state at the tear.
+///
+/// The tension estimate of a step that tears can be far past what the edge carries (a grasp that
+/// jumps, a force 1000 times the strength: the length stop is 10^6 times stiffer than the yarn),
+/// so the event does not copy it. The rule:
+/// - strain ε = min(|x_b − x_a| / L0 − 1, ε_b·f): the edge's own length, at most its breaking
+///   strain (ε_b of the curve times the edge's strength factor f);
+/// - stress σ = min(T_est / A, σ_c(ε)) and tension T = σ·A, where σ_c(ε) = max(0, min(E·(ε − ε_p),
+///   curve(ε))) is what that strain carries: elastically from the plastic strain ε_p, at most the
+///   loading curve; so σ ≤ the curve at the breaking strain;
+/// - plastic_strain = ε_p; strain_rate = (ε − ε_previous) / Δt with ε_previous the strain the
+///   edge had before this step.
+/// On a slow pull the estimate and the length agree, and the event reports σ_b·A at ε_b.
+/// `time` [s] is the simulated time of the event, `time_step` [s] the step's Δt.
+TearEvent tearEventOf(const Scene& scene, std::size_t edge, double time, double time_step);
+
+}  // namespace yarn_tearing

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <string>
+
+namespace yarn_tearing {
+namespace ros_layer {
+
+/// Physical bounds on what clients send on topics (README, "Bad input"): past them a message is
+/// refused, so nothing from outside can overflow the simulation.
+namespace input_bounds {
+
+constexpr double kMaxForce = 1.0e6;         ///< |applied force| [N]
+constexpr double kMaxDistance = 1.0e4;      ///< distance of a grasp target from the origin [m]
+constexpr double kMaxDuration = 1.0e9;      ///< applied force duration [s]
+constexpr std::size_t kMaxFrameName = 256;  ///< tf frame name [characters]
+
+}  // namespace input_bounds
+
+/// Throws InputRejected (kNotFinite or kOutOfBounds) unless `value` is finite and its norm is at
+/// most `bound`; `what` names the quantity and `unit` its unit in the message, e.g. "force", "N".
+void requireBoundedVector(const Eigen::Vector3d& value, double bound, const std::string& what,
+                          const std::string& unit);
+
+}  // namespace ros_layer
+}  // namespace yarn_tearing

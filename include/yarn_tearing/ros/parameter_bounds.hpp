@@ -1,0 +1,42 @@
+#pragma once
+
+#include <cstddef>
+
+#include "yarn_tearing/ros/input_bounds.hpp"
+
+namespace yarn_tearing {
+namespace ros_layer {
+
+/// Physical bounds on the node's parameters (README, "Bad input"): what the simulation can
+/// represent in double precision with room to spare. A parameter past one stops the node at start,
+/// naming the parameter and the bound.
+namespace parameter_bounds {
+
+constexpr double kMaxGravity = 1.0e3;                        ///< |gravity| [m/s^2] (100 g)
+constexpr double kMaxPosition = input_bounds::kMaxDistance;  ///< yarn ends from the origin [m]
+constexpr double kMinRadius = 1.0e-7;         ///< yarn radius [m] (a fine fibre is 5e-6)
+constexpr double kMaxRadius = 1.0;            ///< yarn radius [m]
+constexpr double kMinTex = 1.0e-3;            ///< linear density [g/km]
+constexpr double kMaxTex = 1.0e7;             ///< linear density [g/km] (10 kg/m)
+constexpr double kMaxLength = 1.0e4;          ///< yarn length [m]
+constexpr double kMinSegment = 1.0e-6;        ///< length / (num_vertices - 1) [m]
+constexpr double kMinDensity = 1.0;           ///< material density [kg/m^3]
+constexpr double kMaxDensity = 1.0e5;         ///< material density [kg/m^3]
+constexpr double kMaxViscosity = 1.0e20;      ///< plastic viscosity [Pa*s]
+constexpr double kMaxCurveStrain = 10.0;      ///< strain of a stress-strain point [-]
+constexpr double kMaxCurveStress = 1.0e12;    ///< stress of a stress-strain point [Pa]
+constexpr double kMinYoungsModulus = 1.0e3;   ///< slope of the first curve segment [Pa]
+constexpr double kMaxYoungsModulus = 1.0e13;  ///< slope of the first curve segment [Pa]
+constexpr double kMaxEndMass = 1.0e3;         ///< end_mass [kg]
+constexpr double kMinDirection = 1.0e-6;      ///< |direction| [-]
+constexpr double kMaxDirection = 1.0e6;       ///< |direction| [-]
+constexpr double kMaxWeibullModulus = 1.0e3;  ///< weibull_modulus [-] (0 = none, else >= 1)
+constexpr double kMaxFrameTimeout = 1.0e6;    ///< frame_timeout [s]
+constexpr int kMaxYarnVertices = 100000;      ///< num_vertices of one yarn
+/// Vertices plus edges over all yarns: checked before anything is allocated (~200 bytes each).
+constexpr std::size_t kSceneBudget = 1000000;
+
+}  // namespace parameter_bounds
+
+}  // namespace ros_layer
+}  // namespace yarn_tearing

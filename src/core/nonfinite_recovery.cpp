@@ -1,0 +1,71 @@
+#include "yarn_tearing/core/nonfinite_recovery.hpp"
+
+#include <cmath>
+
+namespace yarn_tearing {
+namespace {
+
+bool edgeIsFinite(const EdgeSet& edges, std::size_t e) {
+  return std::isfinite(edges.rest_length[e]) && std::isfinite(edges.strain_limit[e]) &&
+         std::isfinite(edges.tension[e]) && std::isfinite(edges.spring_tension[e]) &&
+         std::isfinite(edges.stress[e]) && std::isfinite(edges.strain[e]) &&
+         std::isfinite(edges.plastic_strain[e]) && std::isfinite(edges.strain_rate[e]);
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> nonFiniteYarns(const Scene& scene,
+                                          const std::vector<Eigen::Vector3d>& support_force) {
+  std::vector<std::uint8_t> bad(scene.yarns.size(), 0);
+  bool any = false;
+  const VertexSet& vertices = scene.vertices;
+  for (std::size_t v = 0; v < vertices.size(); ++v) {
+    if (!vertices.position[v].allFinite() || !vertices.velocity[v].allFinite() ||
+        !support_force[v].allFinite()) {
+      bad[vertices.yarn[v]] = 1;
+      any = true;
+    }
+  }
+  const EdgeSet& edges = scene.edges;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (!edgeIsFinite(edges, e)) {
+      bad[edges.yarn[e]] = 1;
+      any = true;
+    }
+  }
+  std::vector<std::uint32_t> yarns;
+  if (!any) return yarns;
+  for (std::size_t y = 0; y < bad.size(); ++y) {
+    if (bad[y]) yarns.push_back(static_cast<std::uint32_t>(y));
+  }
+  return yarns;
+}
+
+void restoreYarn(const Scene& initial, std::uint32_t yarn, Scene& scene) {
+  VertexSet& vertices = scene.vertices;
+  const VertexSet& start = initial.vertices;
+  for (std::size_t v = 0; v < vertices.size(); ++v) {
+    if (vertices.yarn[v] != yarn) continue;
+    vertices.position[v] = start.position[v];
+    vertices.velocity[v] = start.velocity[v];
+    vertices.motion[v] = start.motion[v];
+    vertices.applied_force[v] = start.applied_force[v];
+    vertices.kinematic_target[v] = start.kinematic_target[v];
+  }
+  EdgeSet& edges = scene.edges;
+  const EdgeSet& unloaded = initial.edges;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (edges.yarn[e] != yarn) continue;
+    edges.rest_length[e] = unloaded.rest_length[e];
+    edges.strain_limit[e] = unloaded.strain_limit[e];
+    edges.plastic_strain[e] = unloaded.plastic_strain[e];
+    edges.tension[e] = unloaded.tension[e];
+    edges.spring_tension[e] = unloaded.spring_tension[e];
+    edges.stress[e] = unloaded.stress[e];
+    edges.strain[e] = unloaded.strain[e];
+    edges.strain_rate[e] = unloaded.strain_rate[e];
+    edges.broken[e] = unloaded.broken[e];
+  }
+}
+
+}  // namespace yarn_tearing

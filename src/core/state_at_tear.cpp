@@ -1,0 +1,36 @@
+#include "yarn_tearing/core/state_at_tear.hpp"
+
+#include <algorithm>
+
+namespace yarn_tearing {
+
+TearEvent tearEventOf(const Scene& scene, std::size_t edge, double time, double time_step) {
+  const EdgeSet& edges = scene.edges;
+  const Yarn& yarn = scene.yarns[edges.yarn[edge]];
+  const StressStrainCurve& curve = yarn.material.curve;
+  const Eigen::Vector3d& xa = scene.vertices.position[edges.vertex_a[edge]];
+  const Eigen::Vector3d& xb = scene.vertices.position[edges.vertex_b[edge]];
+
+  TearEvent event;
+  event.yarn = edges.yarn[edge];
+  event.edge = static_cast<std::uint32_t>(edge) - yarn.first_edge;
+  event.vertex_a = edges.vertex_a[edge] - yarn.first_vertex;
+  event.vertex_b = edges.vertex_b[edge] - yarn.first_vertex;
+  event.position = 0.5 * (xa + xb);
+  event.time = time;
+
+  const double breaking_strain = curve.breakingStrain() * edges.strength_factor[edge];
+  const double length_strain = (xb - xa).norm() / edges.original_rest_length[edge] - 1.0;
+  event.strain = std::min(length_strain, breaking_strain);
+  event.plastic_strain = edges.plastic_strain[edge];
+  const double elastic_stress = curve.youngsModulus() * (event.strain - event.plastic_strain);
+  const double carried =
+      std::max(0.0, std::min(elastic_stress, curve.stressAtStrain(event.strain)));
+  event.stress = std::max(0.0, std::min(edges.stress[edge], carried));
+  event.tension = event.stress * edges.area[edge];
+  const double previous_strain = edges.strain[edge] - edges.strain_rate[edge] * time_step;
+  event.strain_rate = (event.strain - previous_strain) / time_step;
+  return event;
+}
+
+}  // namespace yarn_tearing

@@ -1,0 +1,50 @@
+// check_config: validates yarn_tearing_node's private parameters exactly as the node does, then
+// simulates up to one second (at most 0.5 s of wall time, at least one step) and checks that no
+// step left a non-finite value. Run it under the node's name to check a node's parameters without
+// starting it: `rosrun yarn_tearing check_config __name:=yarn_tearing`. Exit status: 0 valid, 1
+// invalid (the message names the parameter), 3 valid parameters whose simulation went non-finite (a
+// bound is missing: please report it).
+#include <ros/ros.h>
+
+#include <cstdio>
+#include <exception>
+
+#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/ros/node_runner.hpp"
+#include "yarn_tearing/ros/simulation_config.hpp"
+
+namespace {
+
+constexpr double kCheckedTime = 1.0;  ///< [s] simulated
+constexpr double kWallBudget = 0.5;   ///< [s] wall time spent stepping at most
+constexpr int kExitNonFinite = 3;
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace yarn_tearing;
+  ros::init(argc, argv, "yarn_tearing_check_config", ros::init_options::NoRosout);
+  ros::NodeHandle private_nh("~");
+  try {
+    const ros_layer::SimulationConfig config = ros_layer::loadSimulationConfig(private_nh);
+    Simulator simulator(config.parameters, config.yarns);
+    const ros::WallTime start = ros::WallTime::now();
+    const double steps = kCheckedTime / config.parameters.time_step;
+    for (double k = 0.0; k < steps && ros::ok(); k += 1.0) {
+      if (k > 0.0 && (ros::WallTime::now() - start).toSec() > kWallBudget) {
+        break;
+      }
+      simulator.step();
+      if (!simulator.lastHealth().restored_yarns.empty()) {
+        std::fprintf(
+            stderr, "valid parameters, but step %.0f left yarn '%s' non-finite\n", k,
+            simulator.scene().yarns[simulator.lastHealth().restored_yarns[0]].name.c_str());
+        return kExitNonFinite;
+      }
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "invalid configuration: %s\n", e.what());
+    return ros_layer::kExitInvalidConfiguration;
+  }
+  return ros_layer::kExitOk;
+}
