@@ -21,8 +21,8 @@ namespace {
 constexpr double kWarnPeriod = 2.0;     ///< [s] between repeats of one refusal warning
 constexpr double kCyclePeriod = 0.005;  ///< [s] wall: longest sleep between stepping cycles
 constexpr double kStepBudget = 0.02;    ///< [s] wall: longest stepping before serving callbacks
-/// break_events must never be dropped: at least this, and at least the scene's edge count (each edge
-/// tears at most once between resets, so no burst can be longer).
+/// break_events must never be dropped: at least this, and at least the scene's edge count (each
+/// edge tears at most once between resets, so no burst can be longer).
 constexpr std::uint32_t kBreakQueue = 10000;
 constexpr std::uint32_t kStateQueue = 10;
 constexpr std::uint32_t kInputQueue = 100;
