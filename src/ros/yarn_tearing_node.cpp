@@ -50,8 +50,7 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
       stamps_(ros::Time::isSimTime() && config.node.publish_clock),
       publish_schedule_(config.node.publish_rate),
       diagnostics_(nh, private_nh),
-      refusal_warnings_(kWarnPeriod,
-                        static_cast<std::size_t>(WarningSource::kCount) * kNumReasons),
+      refusal_warnings_(kWarnPeriod, static_cast<std::size_t>(WarningSource::kCount) * kNumReasons),
       wrenches_(private_nh, tf_buffer_, config.node.frame_id) {
   states_pub_ = nh_.advertise<YarnStateArray>("yarn_states", kStateQueue);
   const auto edges = static_cast<std::uint32_t>(simulator_.scene().edges.size());
