@@ -20,6 +20,8 @@ packages=(
   libdiagnostic-updater-dev python3-diagnostic-msgs
   # nodelet (the library, its headers, the `nodelet` manager/loader executable)
   libnodelet-dev libnodeletlib-dev libnodeletlib-tools python3-nodelet
+  # live tuning (dynamic_reconfigure: server headers, cfg generator, dynparam)
+  libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
   # package checks (tools/check_catkin_lint.sh)
   catkin-lint
   # scripts (force_ramp, plot_bag)

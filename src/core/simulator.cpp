@@ -56,6 +56,12 @@ Simulator::Simulator(const SimulationParameters& parameters, Scene scene)
   reset();
 }
 
+void Simulator::setParameters(const SimulationParameters& parameters) {
+  parameters.validate();
+  parameters_ = parameters;
+  work_.gram.forceGeneralPath(parameters_.force_general_solver);
+}
+
 void Simulator::reset() {
   scene_ = initial_scene_;
   resetWorkspace();

@@ -12,8 +12,10 @@ namespace {
 constexpr int kSegmentsId = 0;
 constexpr int kVerticesId = 1;
 constexpr int kBreaksId = 2;
-constexpr double kVertexScale = 1.5;  ///< vertex sphere diameter / segment width
-constexpr double kBreakScale = 4.0;   ///< break cube edge / segment width
+constexpr int kLabelId = 3;
+constexpr double kLabelHeight = 0.01;  ///< [m] height of the yarn-name text
+constexpr double kVertexScale = 1.5;   ///< vertex sphere diameter / segment width
+constexpr double kBreakScale = 4.0;    ///< break cube edge / segment width
 
 std_msgs::ColorRGBA rgba(double r, double g, double b) {
   std_msgs::ColorRGBA color;
@@ -74,8 +76,12 @@ visualization_msgs::MarkerArray MarkerBuilder::build(const Scene& scene, const r
     array.markers.push_back(vertices(scene, yarn, width, stamp));
     array.markers.push_back(breaks(y, yarn, width, stamp));
   }
+  for (const Yarn& yarn : scene.yarns) {
+    array.markers.push_back(label(scene, yarn, stamp));
+  }
   for (visualization_msgs::Marker& marker : array.markers) {
-    if (marker.action == visualization_msgs::Marker::ADD && marker.points.empty()) {
+    if (marker.action == visualization_msgs::Marker::ADD && marker.points.empty() &&
+        marker.type != visualization_msgs::Marker::TEXT_VIEW_FACING) {
       marker.action = visualization_msgs::Marker::DELETE;
     }
   }
@@ -127,6 +133,16 @@ visualization_msgs::Marker MarkerBuilder::vertices(const Scene& scene, const Yar
     marker.colors.push_back(scene.vertices.isSupport(v) ? rgba(1.0, 0.5, 0.0)
                                                         : rgba(0.6, 0.6, 0.6));
   }
+  return marker;
+}
+
+visualization_msgs::Marker MarkerBuilder::label(const Scene& scene, const Yarn& yarn,
+                                                const ros::Time& stamp) const {
+  visualization_msgs::Marker marker =
+      baseMarker(yarn, kLabelId, visualization_msgs::Marker::TEXT_VIEW_FACING, kLabelHeight, stamp);
+  marker.text = yarn.name;
+  marker.pose.position = toPoint(scene.vertices.position[yarn.first_vertex] +
+                                 Eigen::Vector3d(0.0, 0.0, 1.5 * kLabelHeight));
   return marker;
 }
 

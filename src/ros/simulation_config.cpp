@@ -1,5 +1,8 @@
 #include "yarn_tearing/ros/simulation_config.hpp"
 
+#include <ros/console.h>
+#include <ros/param.h>
+
 #include <algorithm>
 #include <limits>
 #include <optional>
@@ -12,6 +15,7 @@
 #include "yarn_tearing/ros/param_value.hpp"
 #include "yarn_tearing/ros/parameter_bounds.hpp"
 #include "yarn_tearing/ros/parameter_error.hpp"
+#include "yarn_tearing/ros/unknown_parameters.hpp"
 #include "yarn_tearing/ros/yarn_spec_loader.hpp"
 
 namespace yarn_tearing {
@@ -26,6 +30,7 @@ class PrivateParams {
   explicit PrivateParams(const ros::NodeHandle& nh) : nh_(nh) {}
 
   std::optional<ParamValue> get(const std::string& key) const {
+    asked_.insert(key);
     XmlRpc::XmlRpcValue value;
     if (!nh_.getParam(key, value)) {
       return std::nullopt;
@@ -41,6 +46,9 @@ class PrivateParams {
     return *value;
   }
 
+  /// Every key asked for so far: the keys the node knows.
+  const std::set<std::string>& askedKeys() const { return asked_; }
+
   template <typename Read>
   void read(const std::string& key, Read read_value) const {
     if (std::optional<ParamValue> value = get(key)) {
@@ -50,7 +58,27 @@ class PrivateParams {
 
  private:
   const ros::NodeHandle& nh_;
+  mutable std::set<std::string> asked_;
 };
+
+/// Keys of the private namespace that are not start parameters but belong to the node.
+const std::set<std::string> kOtherKnownKeys = {
+    "paused",  // dynamic_reconfigure (cfg/YarnTearing.cfg) keeps it beside the start parameters
+};
+
+/// Warns about each key of the private namespace the node does not read (a misspelling would
+/// otherwise be silently ignored), naming the nearest known key.
+void warnUnknownKeys(const ros::NodeHandle& private_nh, std::set<std::string> known) {
+  known.insert(kOtherKnownKeys.begin(), kOtherKnownKeys.end());
+  std::vector<std::string> names;
+  if (!ros::param::getParamNames(names)) {
+    return;
+  }
+  for (const std::string& warning :
+       unknownParameterWarnings(names, private_nh.getNamespace(), known)) {
+    ROS_WARN("%s", warning.c_str());
+  }
+}
 
 ProjectionMethod parseProjectionMethod(const ParamValue& value) {
   const std::string method = value.string(false);
@@ -86,8 +114,20 @@ SimulationParameters loadPhysics(const PrivateParams& params) {
   params.read("gravity", [&](const ParamValue& v) {
     p.gravity = v.boundedVector3(bounds::kMaxGravity, "m/s^2");
   });
-  params.read("regularization",
-              [&](const ParamValue& v) { p.regularization = v.number(0.0, 1.0, ""); });
+  params.read("regularization", [&](const ParamValue& v) {
+    // [0, 1), as the core and the README say (number() checks a closed range)
+    const std::string allowed = "a finite number in [0, 1)";
+    double regularization = 1.0;
+    try {
+      regularization = v.number(0.0, 1.0, "");
+    } catch (const ParameterError&) {
+      v.fail(allowed);
+    }
+    if (regularization >= 1.0) {
+      v.fail(allowed);
+    }
+    p.regularization = regularization;
+  });
   params.read("air_damping",
               [&](const ParamValue& v) { p.air_damping = v.nonNegativeNumber("N*s/m^2"); });
   params.read("soft_spring_ratio",
@@ -142,11 +182,7 @@ std::vector<YarnSpec> loadYarns(const PrivateParams& params) {
 /// Air damping is explicit: c * dt must stay below the lightest yarn's mass per length, or the drag
 /// overshoots (reverses the velocity) and grows without bound.
 void requireStableDamping(const PrivateParams& params, const SimulationConfig& config) {
-  double lightest = std::numeric_limits<double>::infinity();  // [kg/m]
-  for (const YarnSpec& spec : config.yarns) {
-    lightest = std::min(lightest, spec.linearDensity());
-  }
-  const double limit = lightest / config.parameters.time_step;  // [N*s/m^2]
+  const double limit = maxStableAirDamping(config);  // [N*s/m^2]
   if (!(config.parameters.air_damping < limit)) {
     std::ostringstream allowed;
     allowed << "a number in [0, " << limit
@@ -157,6 +193,14 @@ void requireStableDamping(const PrivateParams& params, const SimulationConfig& c
 
 }  // namespace
 
+double maxStableAirDamping(const SimulationConfig& config) {
+  double lightest = std::numeric_limits<double>::infinity();  // [kg/m]
+  for (const YarnSpec& spec : config.yarns) {
+    lightest = std::min(lightest, spec.linearDensity());
+  }
+  return lightest / config.parameters.time_step;
+}
+
 SimulationConfig loadSimulationConfig(const ros::NodeHandle& private_nh) {
   const PrivateParams params(private_nh);
   SimulationConfig config;
@@ -164,6 +208,7 @@ SimulationConfig loadSimulationConfig(const ros::NodeHandle& private_nh) {
   config.parameters = loadPhysics(params);
   config.yarns = loadYarns(params);
   requireStableDamping(params, config);
+  warnUnknownKeys(private_nh, params.askedKeys());
   return config;
 }
 

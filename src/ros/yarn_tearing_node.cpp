@@ -65,6 +65,12 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
   reset_srv_ = private_nh_.advertiseService("reset", &YarnTearingNode::onReset, this);
   pause_srv_ = private_nh_.advertiseService("set_paused", &YarnTearingNode::onSetPaused, this);
 
+  reconfigure_ = std::make_unique<dynamic_reconfigure::Server<YarnTearingConfig>>(
+      reconfigure_mutex_, private_nh_);
+  reconfigure_->updateConfig(currentTuning());
+  reconfigure_->setCallback(
+      [this](YarnTearingConfig& tuning, std::uint32_t level) { onReconfigure(tuning, level); });
+
   std_msgs::String materials;
   materials.data = describeMaterialsYaml(simulator_.scene());
   materials_pub_.publish(materials);
@@ -77,13 +83,12 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
 void YarnTearingNode::run() {
   // A NodeHandle's queue is the global one unless the nodelet set its own (a ros::CallbackQueue).
   auto& queue = dynamic_cast<ros::CallbackQueue&>(*nh_.getCallbackQueue());
-  const bool simulated_rate = config_.node.publishesInSimulatedTime();
   restartPacing();
-  publish_schedule_.restart(simulated_rate ? simulator_.time() : wallSeconds());
+  restartPublishSchedule();
   while (ros::ok() && !stop_requested_) {
     queue.callAvailable();
     stepCycle();
-    if (!simulated_rate && publish_schedule_.due(wallSeconds())) {
+    if (!config_.node.publishesInSimulatedTime() && publish_schedule_.due(wallSeconds())) {
       publishState();
     }
     diagnostics_.update(wallSeconds(), pacingStatus());
@@ -191,6 +196,67 @@ void YarnTearingNode::publishState() {
   wrenches_.publish(simulator_, inputs_.graspFrames(), stamp);
 }
 
+void YarnTearingNode::setPaused(bool paused) {
+  if (paused_ && !paused) {
+    restartPacing();
+  }
+  if (paused_ != paused) {
+    diagnostics_.restartWindow();
+  }
+  paused_ = paused;
+}
+
+void YarnTearingNode::restartPublishSchedule() {
+  publish_schedule_.restart(config_.node.publishesInSimulatedTime() ? simulator_.time()
+                                                                    : wallSeconds());
+}
+
+YarnTearingConfig YarnTearingNode::currentTuning() const {
+  YarnTearingConfig tuning = YarnTearingConfig::__getDefault__();
+  tuning.real_time_factor = config_.node.real_time_factor;
+  tuning.publish_rate = config_.node.publish_rate;
+  tuning.air_damping = simulator_.parameters().air_damping;
+  tuning.regularization = simulator_.parameters().regularization;
+  tuning.breaking_enabled = simulator_.parameters().breaking_enabled;
+  tuning.paused = paused_;
+  return tuning;
+}
+
+void YarnTearingNode::onReconfigure(YarnTearingConfig& tuning, std::uint32_t /*level*/) {
+  SimulationParameters parameters = simulator_.parameters();
+  if (tuning.air_damping < maxStableAirDamping(config_)) {
+    parameters.air_damping = tuning.air_damping;
+  } else {
+    ROS_WARN(
+        "dynamic_reconfigure: air_damping %g refused: must be below %g N*s/m^2 (the lightest "
+        "yarn's mass per length / time_step); keeping %g",
+        tuning.air_damping, maxStableAirDamping(config_), parameters.air_damping);
+  }
+  parameters.regularization = tuning.regularization;
+  parameters.breaking_enabled = tuning.breaking_enabled;
+  try {
+    simulator_.setParameters(parameters);
+  } catch (const std::invalid_argument& e) {
+    ROS_WARN("dynamic_reconfigure refused: %s", e.what());
+  }
+  if (tuning.real_time_factor != config_.node.real_time_factor ||
+      tuning.publish_rate != config_.node.publish_rate) {
+    config_.node.real_time_factor = tuning.real_time_factor;
+    config_.node.publish_rate = tuning.publish_rate;
+    scheduler_.setRealTimeFactor(tuning.real_time_factor);
+    publish_schedule_ = RateSchedule(tuning.publish_rate);
+    restartPacing();
+    restartPublishSchedule();
+  }
+  setPaused(tuning.paused);
+  tuning = currentTuning();  // what is in effect goes back to the clients
+  ROS_INFO(
+      "yarn_tearing_node: real_time_factor %g, publish_rate %g Hz, air_damping %g N*s/m^2, "
+      "regularization %g, breaking %s%s",
+      tuning.real_time_factor, tuning.publish_rate, tuning.air_damping, tuning.regularization,
+      tuning.breaking_enabled ? "enabled" : "disabled", tuning.paused ? ", paused" : "");
+}
+
 void YarnTearingNode::restartPacing() {
   const double wall_now = wallSeconds();
   scheduler_.restart(wall_now, simulator_.time());
@@ -258,13 +324,8 @@ bool YarnTearingNode::onReset(std_srvs::Empty::Request& /*request*/,
 
 bool YarnTearingNode::onSetPaused(std_srvs::SetBool::Request& request,
                                   std_srvs::SetBool::Response& response) {
-  if (paused_ && !request.data) {
-    restartPacing();
-  }
-  if (paused_ != static_cast<bool>(request.data)) {
-    diagnostics_.restartWindow();
-  }
-  paused_ = request.data;
+  setPaused(request.data);
+  reconfigure_->updateConfig(currentTuning());  // dynamic_reconfigure clients see it
   response.success = true;
   response.message = paused_ ? "paused" : "running";
   return true;

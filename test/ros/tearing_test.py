@@ -1,9 +1,11 @@
 #!/usr/bin/python3
 """Through topics only: force_ramp pulls a pinned yarn until it tears; the break event's tension
-matches the closed-form breaking tension sigma_b * pi * r^2 from this test's own config (2 %)."""
+matches the closed-form breaking tension sigma_b * pi * r^2 from this test's own config (2 %), and
+force_ramp then ends."""
 import math
 import unittest
 
+import rosnode
 import rospy
 import rostest
 
@@ -39,6 +41,13 @@ class TearingTest(unittest.TestCase):
                                delta=TOLERANCE * yarn["material"]["stress_strain"][-1][0])
         self.assertAlmostEqual(event.position.x, yarn["start"][0], delta=1.0e-3)
         self.assertLess(event.position.z, yarn["start"][2])
+
+        # force_ramp, like a testing machine whose specimen tore, has cleared its force and ended
+        def ramp_ended():  # its process no longer answers (the master may still list it)
+            return not rosnode.rosnode_ping("/force_ramp", max_count=1)
+
+        self.assertTrue(support.wait_until(ramp_ended, timeout=10.0),
+                        "force_ramp still running after its yarn tore")
 
 
 if __name__ == "__main__":

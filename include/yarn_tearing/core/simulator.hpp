@@ -31,6 +31,11 @@ class Simulator {
   /// lastHealth().restored_yarns; the other yarns go on.
   void step();
 
+  /// Replaces the parameters between steps (live tuning: air damping, regularization, breaking
+  /// enabled, ...); the next step uses them. Throws std::invalid_argument like the constructor and
+  /// then keeps the old ones.
+  void setParameters(const SimulationParameters& parameters);
+
   /// Back to the initial scene and time 0; applied forces, grasps and pending events cleared.
   void reset();
 

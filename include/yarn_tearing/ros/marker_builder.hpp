@@ -20,9 +20,11 @@ std_msgs::ColorRGBA stressColor(double stress_ratio);
 /// Builds yarn_markers. Per yarn (namespace = yarn name, fixed ids, identity orientation):
 ///   id 0 LINE_LIST   intact segments, each coloured by stress / breaking stress;
 ///   id 1 SPHERE_LIST vertices (supports orange, free ones grey);
-///   id 2 CUBE_LIST   the positions where the yarn tore.
-/// A marker with no points is sent as DELETE; the first array starts with one DELETEALL (clears
-/// markers of an earlier run), later ones never do, so RViz does not flicker.
+///   id 2 CUBE_LIST   the positions where the yarn tore;
+///   id 3 TEXT_VIEW_FACING the yarn's name, 1 cm high, 1.5 cm above its vertex 0 (after the
+///        other markers of all yarns).
+/// A marker with no points (but the text) is sent as DELETE; the first array starts with one
+/// DELETEALL (clears markers of an earlier run), later ones never do, so RViz does not flicker.
 class MarkerBuilder {
  public:
   /// `frame_id`: frame of the scene; `min_width` [m]: smallest drawn segment width (yarns are
@@ -44,6 +46,8 @@ class MarkerBuilder {
                                       const ros::Time& stamp) const;
   visualization_msgs::Marker vertices(const Scene& scene, const Yarn& yarn, double width,
                                       const ros::Time& stamp) const;
+  visualization_msgs::Marker label(const Scene& scene, const Yarn& yarn,
+                                   const ros::Time& stamp) const;
   visualization_msgs::Marker breaks(std::size_t yarn_index, const Yarn& yarn, double width,
                                     const ros::Time& stamp) const;
 

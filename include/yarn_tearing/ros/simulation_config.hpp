@@ -24,5 +24,9 @@ struct SimulationConfig {
 /// config that loads also builds a Simulator.
 SimulationConfig loadSimulationConfig(const ros::NodeHandle& private_nh);
 
+/// Air damping [N*s/m^2] must stay below this: the lightest yarn's mass per length / time_step
+/// (explicit drag; more would reverse a velocity in one step and grow without bound).
+double maxStableAirDamping(const SimulationConfig& config);
+
 }  // namespace ros_layer
 }  // namespace yarn_tearing

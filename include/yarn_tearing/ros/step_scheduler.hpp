@@ -19,6 +19,9 @@ class StepScheduler {
   /// True when the factor is 0: every cycle steps for as long as its wall budget allows.
   bool asFastAsPossible() const { return real_time_factor_ == 0.0; }
 
+  /// Changes the real-time factor [-] >= 0 (live tuning); call restart() afterwards.
+  void setRealTimeFactor(double real_time_factor) { real_time_factor_ = real_time_factor; }
+
   /// Anchors simulated time `sim_time` [s] to wall time `wall_now` [s] (start, reset, resume).
   void restart(double wall_now, double sim_time);
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dynamic_reconfigure/server.h>
 #include <ros/ros.h>
 #include <std_srvs/Empty.h>
 #include <std_srvs/SetBool.h>
@@ -7,9 +8,12 @@
 #include <tf2_ros/transform_listener.h>
 
 #include <atomic>
+#include <boost/thread/recursive_mutex.hpp>
+#include <memory>
 
 #include "yarn_tearing/AppliedForce.h"
 #include "yarn_tearing/Grasp.h"
+#include "yarn_tearing/YarnTearingConfig.h"
 #include "yarn_tearing/core/simulator.hpp"
 #include "yarn_tearing/ros/frame_transformer.hpp"
 #include "yarn_tearing/ros/input_handler.hpp"
@@ -31,7 +35,8 @@ namespace ros_layer {
 /// yarn_states, yarn_markers and the holders' wrenches (~grasp_wrench/..., ~pin_wrench/...) at
 /// publish_rate, break_events (one message per break, right after
 /// the step that tore), yarn_materials (latched YAML), /clock when publish_clock, /diagnostics.
-/// Services: ~reset (std_srvs/Empty), ~set_paused (std_srvs/SetBool).
+/// Services: ~reset (std_srvs/Empty), ~set_paused (std_srvs/SetBool); dynamic_reconfigure
+/// (cfg/YarnTearing.cfg) in the private namespace.
 /// Single-threaded: callbacks run between stepping cycles in run(). Shared by yarn_tearing_node
 /// (node_runner) and the nodelet (YarnTearingNodelet).
 class YarnTearingNode {
@@ -59,6 +64,14 @@ class YarnTearingNode {
   void reportRestoredYarns();
   bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
   bool onSetPaused(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
+  /// dynamic_reconfigure: applies real_time_factor, publish_rate, air_damping, regularization,
+  /// breaking_enabled and paused between steps.
+  void onReconfigure(YarnTearingConfig& tuning, std::uint32_t level);
+  /// The live-tunable values as they are now.
+  YarnTearingConfig currentTuning() const;
+  void setPaused(bool paused);
+  /// Restarts the publishing schedule on the clock publish_rate counts in (wall or simulated).
+  void restartPublishSchedule();
 
   /// Takes the steps that are due (or steps for a wall budget when as fast as possible).
   void stepCycle();
@@ -102,6 +115,8 @@ class YarnTearingNode {
   ros::ServiceServer pause_srv_;
   bool paused_ = false;
   std::atomic<bool> stop_requested_{false};
+  boost::recursive_mutex reconfigure_mutex_;
+  std::unique_ptr<dynamic_reconfigure::Server<YarnTearingConfig>> reconfigure_;
 };
 
 }  // namespace ros_layer

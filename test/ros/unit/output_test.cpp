@@ -87,11 +87,21 @@ TEST(MarkerBuilder, StableIdsAndOneDeleteAllOnly) {
   const Simulator simulator(SimulationParameters{}, twoYarns());
   MarkerBuilder builder("world", 0.002);
   const auto first = builder.build(simulator.scene(), ros::Time(1.0));
-  ASSERT_EQ(first.markers.size(), 7U);
+  ASSERT_EQ(first.markers.size(), 9U);
   EXPECT_EQ(first.markers[0].action, visualization_msgs::Marker::DELETEALL);
   const auto second = builder.build(simulator.scene(), ros::Time(2.0));
-  ASSERT_EQ(second.markers.size(), 6U);
-  for (std::size_t i = 0; i < second.markers.size(); ++i) {
+  ASSERT_EQ(second.markers.size(), 8U);
+  for (std::size_t y = 0; y < 2; ++y) {  // the yarns' names, after the other markers
+    const visualization_msgs::Marker& label = second.markers[6 + y];
+    EXPECT_EQ(label.type, visualization_msgs::Marker::TEXT_VIEW_FACING);
+    EXPECT_EQ(label.action, visualization_msgs::Marker::ADD);
+    EXPECT_EQ(label.text, simulator.scene().yarns[y].name);
+    EXPECT_EQ(label.ns, label.text);
+    EXPECT_EQ(label.id, 3);
+    EXPECT_GT(label.pose.position.z,
+              simulator.scene().vertices.position[simulator.scene().yarns[y].first_vertex].z());
+  }
+  for (std::size_t i = 0; i < 6; ++i) {
     const visualization_msgs::Marker& m = second.markers[i];
     EXPECT_EQ(m.ns, simulator.scene().yarns[i / 3].name);
     EXPECT_EQ(m.id, static_cast<int>(i % 3));
