@@ -7,7 +7,9 @@ void EdgeStretchState::reset(const EdgeSet& edges, const EdgeStretchLimits& limi
   const std::size_t q = edges.size();
   const double time_step2 = time_step * time_step;
   compliant_shift_.resize(q);
-  for (std::size_t e = 0; e < q; ++e) compliant_shift_[e] = limits.compliance[e] / time_step2;
+  for (std::size_t e = 0; e < q; ++e) {
+    compliant_shift_[e] = limits.constraintCompliance(e) / time_step2;
+  }
   max_stretch_ = limits.max_stretch;
   shift_ = compliant_shift_;
   base_length_ = edges.rest_length;

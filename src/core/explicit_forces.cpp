@@ -1,25 +1,10 @@
 #include "yarn_tearing/core/explicit_forces.hpp"
 
-#include <algorithm>
-
 namespace yarn_tearing {
-namespace {
-
-/// Soft-spring constant of an edge [N/m]: ratio * (lighter free vertex mass) / dt^2.
-double softSpringConstant(const VertexSet& vertices, std::uint32_t a, std::uint32_t b,
-                          const SimulationParameters& p) {
-  double lighter = 0.0;
-  if (!vertices.isSupport(a)) lighter = vertices.mass[a];
-  if (!vertices.isSupport(b)) {
-    lighter = lighter > 0.0 ? std::min(lighter, vertices.mass[b]) : vertices.mass[b];
-  }
-  return p.soft_spring_ratio * lighter / (p.time_step * p.time_step);
-}
-
-}  // namespace
 
 void accumulateExplicitForces(const SimulationParameters& parameters, const VertexSet& vertices,
-                              EdgeSet& edges, std::vector<Eigen::Vector3d>& force) {
+                              const std::vector<double>& spring_constant, EdgeSet& edges,
+                              std::vector<Eigen::Vector3d>& force) {
   for (std::size_t v = 0; v < vertices.size(); ++v) {
     force[v] = vertices.mass[v] * parameters.gravity + vertices.applied_force[v] -
                parameters.air_damping * vertices.damping_length[v] * vertices.velocity[v];
@@ -33,7 +18,7 @@ void accumulateExplicitForces(const SimulationParameters& parameters, const Vert
     const double length = d.norm();
     const double stretch = length - edges.rest_length[e];
     if (!(stretch > 0.0)) continue;  // yarns do not resist compression
-    const double tension = softSpringConstant(vertices, a, b, parameters) * stretch;
+    const double tension = spring_constant[e] * stretch;
     edges.spring_tension[e] = tension;
     const Eigen::Vector3d f = (tension / length) * d;
     force[a] += f;

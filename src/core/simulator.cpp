@@ -116,7 +116,9 @@ void Simulator::restoreNonFiniteYarns(std::size_t first_event_of_step) {
 }
 
 void Simulator::accumulateForces() {
-  accumulateExplicitForces(parameters_, scene_.vertices, scene_.edges, work_.force);
+  computeStretchLimits(scene_, parameters_, work_.stretch_limits);
+  accumulateExplicitForces(parameters_, scene_.vertices, work_.stretch_limits.soft_spring,
+                           scene_.edges, work_.force);
 }
 
 void Simulator::predictPositions() {
@@ -128,7 +130,6 @@ void Simulator::predictPositions() {
 void Simulator::projectLengthConstraints() {
   VertexSet& vertices = scene_.vertices;
   EdgeSet& edges = scene_.edges;
-  computeStretchLimits(scene_, work_.stretch_limits);
   const ProjectionResult result = work_.projection.project(
       vertices.position, vertices, edges, work_.stretch_limits, parameters_, work_.gram);
   for (std::size_t e = 0; e < edges.size(); ++e) {

@@ -31,7 +31,7 @@ void expectReleasedYarnHeldInOneIteration(bool general_path) {
   std::vector<Eigen::Vector3d> position = scene.vertices.position;
   for (std::size_t v = 1; v < position.size(); ++v) position[v].z() -= fall;
   EdgeStretchLimits limits;
-  computeStretchLimits(scene, limits);
+  computeStretchLimits(scene, parameters, limits);
   EdgeGramSolver gram;
   gram.setTopology(scene.edges, scene.vertices.size());
   gram.forceGeneralPath(general_path);

@@ -12,10 +12,11 @@ namespace yarn_tearing {
 /// Stage 1: the non-constraint force on each vertex [N] into `force` (sized to the vertices):
 /// gravity m g, the applied force, linear air damping -c l v (c = air_damping [N s/m^2], l the
 /// vertex's share of yarn length [m]) and the tension-only soft springs along the intact edges,
-/// k = soft_spring_ratio * (lighter free vertex mass) / dt^2 [N/m], stable for a ratio below 1.
-/// Writes each edge's spring tension [N] (0 when slack or broken) to edges.spring_tension.
+/// `spring_constant` [N/m] per edge (EdgeStretchLimits::soft_spring). Writes each edge's spring
+/// tension [N] (0 when slack or broken) to edges.spring_tension.
 void accumulateExplicitForces(const SimulationParameters& parameters, const VertexSet& vertices,
-                              EdgeSet& edges, std::vector<Eigen::Vector3d>& force);
+                              const std::vector<double>& spring_constant, EdgeSet& edges,
+                              std::vector<Eigen::Vector3d>& force);
 
 /// Stage 2: symplectic Euler over one time step. Free vertices take v += dt F / m, x += dt v;
 /// pinned ones stay at rest; kinematic ones jump to their target with the velocity that takes

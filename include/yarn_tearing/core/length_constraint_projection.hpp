@@ -24,7 +24,8 @@ struct ProjectionResult {
 
 /// Stage 3: limits every intact edge, stretch only, to
 ///   |x_a - x_b| <= L + min(c T, s_max),
-/// with L the (plastic) rest length, c = L0 / (E A) the edge's elastic compliance [m/N], T the
+/// with L the (plastic) rest length, c the compliance of the edge's constraint [m/N] (its elastic
+/// compliance L0 / (E A) less the soft spring's share, EdgeStretchLimits), T the
 /// force the constraint itself exerts (its multiplier / dt^2) and s_max the stretch [m] at which
 /// the edge reaches its breaking length (EdgeStretchLimits). The strain limit is thus the
 /// elastic strain of the edge's current stress (paper §3.3), solved in the same system
