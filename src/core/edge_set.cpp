@@ -18,6 +18,9 @@ void EdgeSet::add(std::uint32_t a, std::uint32_t b, std::uint32_t yarn_index, do
   stress.push_back(0.0);
   strain.push_back(0.0);
   strain_rate.push_back(0.0);
+  loading_time.push_back(0.0);
+  loading_start_strain.push_back(0.0);
+  rate_factor.push_back(1.0);
   broken.push_back(0);
 }
 

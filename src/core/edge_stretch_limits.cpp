@@ -27,7 +27,8 @@ void computeStretchLimits(const Scene& scene, const SimulationParameters& parame
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const StressStrainCurve& curve = scene.yarns[edges.yarn[e]].material.curve;
     const double original = edges.original_rest_length[e];
-    const double compliance = original / (curve.youngsModulus() * edges.area[e]);
+    const double compliance =
+        original / (curve.youngsModulus() * edges.rate_factor[e] * edges.area[e]);
     limits.compliance[e] = compliance;
     limits.soft_spring[e] = std::min(
         stabilitySpringConstant(scene.vertices, edges.vertex_a[e], edges.vertex_b[e], parameters),

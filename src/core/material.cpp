@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "yarn_tearing/core/rate_dependence.hpp"
+
 namespace yarn_tearing {
 
 void Material::validate() const {
@@ -10,10 +12,11 @@ void Material::validate() const {
     throw std::invalid_argument("material " + name + ": density must be > 0 [kg/m^3], got " +
                                 std::to_string(density));
   }
-  if (!std::isfinite(plastic_viscosity) || plastic_viscosity < 0.0) {
-    throw std::invalid_argument("material " + name +
-                                ": plastic_viscosity must be >= 0 [Pa*s], got " +
-                                std::to_string(plastic_viscosity));
+  if (!(rate_sensitivity >= 0.0 && rate_sensitivity <= RateDependence::kMaxSensitivity)) {
+    throw std::invalid_argument("material " + name + ": rate_sensitivity must be in [0, " +
+                                std::to_string(RateDependence::kMaxSensitivity) +
+                                "] (per decade of strain rate), got " +
+                                std::to_string(rate_sensitivity));
   }
 }
 

@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "yarn_tearing/core/rate_dependence.hpp"
 #include "yarn_tearing/ros/parameter_bounds.hpp"
 #include "yarn_tearing/ros/parameter_error.hpp"
 
@@ -61,15 +62,25 @@ StressStrainCurve loadCurve(const ParamValue& curve) {
 /// documentation keys of their own).
 Material loadMaterialMap(const ParamValue& map, const std::string& name, bool strict) {
   if (strict) {
-    map.requireKeysIn({"density", "plastic_viscosity", "stress_strain", "source"});
+    map.requireKeysIn(
+        {"density", "rate_sensitivity", "plastic_viscosity", "stress_strain", "source"});
   }
   Material material;
   material.name = name;
   material.density =
       map.member("density").number(bounds::kMinDensity, bounds::kMaxDensity, "kg/m^3");
-  material.plastic_viscosity =
-      map.has("plastic_viscosity")
-          ? map.member("plastic_viscosity").number(0.0, bounds::kMaxViscosity, "Pa*s")
+  // plastic_viscosity (eta) was replaced by rate_sensitivity; files that say 0.0 (rate
+  // independent, as before) still load.
+  if (map.has("plastic_viscosity") &&
+      map.member("plastic_viscosity").nonNegativeNumber("Pa*s") != 0.0) {
+    map.member("plastic_viscosity")
+        .fail(
+            "0.0: plastic_viscosity was replaced by rate_sensitivity [per decade of strain rate]"
+            " (config/MATERIALS.md)");
+  }
+  material.rate_sensitivity =
+      map.has("rate_sensitivity")
+          ? map.member("rate_sensitivity").number(0.0, RateDependence::kMaxSensitivity, "")
           : 0.0;
   material.curve = loadCurve(map.member("stress_strain"));
   try {
@@ -98,13 +109,13 @@ Material loadMaterial(const ParamValue& material, const ParamValue& presets) {
     const std::string preset = material.string(false);
     if (!presets.has(preset)) {
       material.fail("the name of a preset in " + presets.name() + " (" + presetNames(presets) +
-                    ") or an inline map {density, plastic_viscosity, stress_strain}");
+                    ") or an inline map {density, rate_sensitivity, stress_strain}");
     }
     return loadMaterialMap(presets.member(preset), preset, false);
   }
   if (!material.isStruct()) {
     material.fail(
-        "a preset name or an inline map {density: kg/m^3, plastic_viscosity: Pa*s, "
+        "a preset name or an inline map {density: kg/m^3, rate_sensitivity: per decade, "
         "stress_strain: [[strain, Pa], ...]}");
   }
   return loadMaterialMap(material, "inline", true);

@@ -63,7 +63,7 @@ std::string describeMaterialsYaml(const Scene& scene) {
     yaml << "  weakest_breaking_force: " << yamlFloat(weakestBreakingForce(scene, yarn)) << "\n";
     yaml << "  radius: " << yamlFloat(yarn.radius) << "\n";
     yaml << "  density: " << yamlFloat(yarn.material.density) << "\n";
-    yaml << "  plastic_viscosity: " << yamlFloat(yarn.material.plastic_viscosity) << "\n";
+    yaml << "  rate_sensitivity: " << yamlFloat(yarn.material.rate_sensitivity) << "\n";
     yaml << "  curve: [";
     bool first = true;
     for (const CurvePoint& point : curve.points()) {

@@ -22,7 +22,13 @@ struct EdgeSet {
   std::vector<double> stress;          ///< tension / area [Pa]
   std::vector<double> strain;          ///< eps_p + elastic strain, relative to L0 [-]
   std::vector<double> strain_rate;     ///< d(strain)/dt [1/s]
-  std::vector<std::uint8_t> broken;    ///< 1 once torn
+  /// Time the edge has been under tension without a break [s] (0 while slack).
+  std::vector<double> loading_time;
+  std::vector<double> loading_start_strain;  ///< strain when that loading began [-]
+  /// Factor f [-] on the material curve's stresses at the edge's loading rate
+  /// (RateDependence); 1 for a rate-independent material.
+  std::vector<double> rate_factor;
+  std::vector<std::uint8_t> broken;  ///< 1 once torn
 
   std::size_t size() const { return vertex_a.size(); }
   bool intact(std::size_t e) const { return broken[e] == 0; }

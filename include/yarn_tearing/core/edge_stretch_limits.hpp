@@ -15,8 +15,9 @@ namespace yarn_tearing {
 /// breaking length: past that it is hard, so a yarn pulled far beyond its strength holds at its
 /// breaking length until the tearing stage cuts it.
 struct EdgeStretchLimits {
-  /// Elastic compliance of the whole edge c = L0 / (E A) [m/N]: engineering strain on the
-  /// original length L0, as the stress-strain curve is given, so the stretch is L0 sigma / E.
+  /// Elastic compliance of the whole edge c = L0 / (f E A) [m/N]: engineering strain on the
+  /// original length L0, as the stress-strain curve is given, so the stretch is L0 sigma / (f E),
+  /// f the edge's rate factor (EdgeSet::rate_factor).
   std::vector<double> compliance;
   /// Soft-spring constant k_s [N/m]: soft_spring_ratio m_min / dt^2 (m_min the lighter free
   /// vertex), but at most kSoftSpringShare of the edge's stiffness 1 / c.

@@ -8,12 +8,16 @@ namespace yarn_tearing {
 
 /// Mechanical properties of a yarn's fibre material.
 struct Material {
-  std::string name;                ///< preset name or "inline"
-  double density = 1500.0;         ///< fibre density [kg/m^3]
-  double plastic_viscosity = 0.0;  ///< plastic flow viscosity eta [Pa*s]; 0 = rate-independent
-  StressStrainCurve curve{{{0.0, 0.0}, {0.01, 1.0e8}, {0.07, 3.0e8}}};  ///< loading curve
+  std::string name;         ///< preset name or "inline"
+  double density = 1500.0;  ///< fibre density [kg/m^3]
+  /// Rate sensitivity k [-]: fractional rise of the curve's stresses per decade of strain rate
+  /// (RateDependence); 0 = rate-independent.
+  double rate_sensitivity = 0.0;
+  /// Loading curve at the reference strain rate RateDependence::kReferenceStrainRate.
+  StressStrainCurve curve{{{0.0, 0.0}, {0.01, 1.0e8}, {0.07, 3.0e8}}};
 
-  /// Throws std::invalid_argument naming the field unless density > 0 and viscosity >= 0.
+  /// Throws std::invalid_argument naming the field unless density > 0 and
+  /// 0 <= rate_sensitivity <= RateDependence::kMaxSensitivity.
   void validate() const;
 };
 

@@ -13,11 +13,15 @@ namespace yarn_tearing {
 ///
 /// - stress sigma = T / area; a negative tension is compression: reported, but it neither yields
 ///   nor breaks the edge and its elastic strain counts as 0.
-/// - plastic strain: eta = 0: eps_p = max(eps_p, eps_p*(sigma)), eps_p*(sigma) the plastic strain
-///   the curve leaves at sigma; eta > 0: d(eps_p)/dt = E (eps_p* - eps_p)+ / eta, integrated
-///   exactly over the step, so slow loading flows further than fast loading (§3.4).
-/// - strain = eps_p + sigma+ / E relative to L0; rest length L0 (1 + eps_p);
+/// - the curve at the edge's loading rate is the material's curve with its stresses times the
+///   edge's rate factor f (RateDependence; 1 for a rate-independent material), so the edge reads
+///   the material's curve at sigma / f.
+/// - plastic strain: eps_p = max(eps_p, eps_p*(sigma / f)), eps_p* the plastic strain the curve
+///   leaves at a stress, no further than the edge's breaking point.
+/// - strain = eps_p + sigma+ / (f E) relative to L0; rest length L0 (1 + eps_p);
 ///   the next projection holds the edge to the elastic strain of its stress (its strain limit).
+/// - the loading rate: strain gained since the edge last became taut over the time since; f for
+///   the next step follows from it (1 while the edge is slack).
 void updateMaterialResponse(const std::vector<Yarn>& yarns, double time_step, EdgeSet& edges);
 
 }  // namespace yarn_tearing

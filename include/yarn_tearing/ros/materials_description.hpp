@@ -14,7 +14,7 @@ namespace ros_layer {
 ///     yield_stress: [Pa]       yield_strain: [-]
 ///     youngs_modulus: [Pa]     area: [m^2] (load-bearing)   radius: [m]
 ///     weakest_breaking_force: [N] (see weakestBreakingForce)
-///     density: [kg/m^3]        plastic_viscosity: [Pa*s]
+///     density: [kg/m^3]        rate_sensitivity: [-, per decade of strain rate]
 ///     curve: [[strain, stress [Pa]], ...]
 /// Every number is written so that YAML 1.1 readers (PyYAML) parse it as a float.
 std::string describeMaterialsYaml(const Scene& scene);

@@ -221,12 +221,12 @@ TEST(MaterialLoader, LooksUpPresetsByName) {
   XmlRpc::XmlRpcValue presets;
   presets["cotton"] = inlineMaterial();
   presets["cotton"]["source"] = "a book";
-  presets["cotton"]["plastic_viscosity"] = 2.0;
+  presets["cotton"]["rate_sensitivity"] = 0.05;
   const ParamValue preset_param("/node/materials", presets);
   const Material material =
       loadMaterial(ParamValue("/node/yarns[0].material", "cotton"), preset_param);
   EXPECT_EQ(material.name, "cotton");
-  EXPECT_DOUBLE_EQ(material.plastic_viscosity, 2.0);
+  EXPECT_DOUBLE_EQ(material.rate_sensitivity, 0.05);
 
   try {
     loadMaterial(ParamValue("/node/yarns[0].material", "silk"), preset_param);
@@ -257,6 +257,22 @@ TEST(MaterialLoader, RejectsMissingDensityAndUnknownKeys) {
   EXPECT_THROW(loadMaterial(ParamValue("/m", material), kNoPresets), ParameterError);
   material = inlineMaterial();
   material["modulus"] = 1.0e9;
+  EXPECT_THROW(loadMaterial(ParamValue("/m", material), kNoPresets), ParameterError);
+}
+
+TEST(MaterialLoader, AcceptsTheReplacedPlasticViscosityOnlyAsZero) {
+  XmlRpc::XmlRpcValue material = inlineMaterial();
+  material["plastic_viscosity"] = 0.0;
+  EXPECT_EQ(loadMaterial(ParamValue("/m", material), kNoPresets).rate_sensitivity, 0.0);
+  material["plastic_viscosity"] = 5.0e9;
+  try {
+    loadMaterial(ParamValue("/m", material), kNoPresets);
+    FAIL() << "plastic_viscosity > 0 accepted";
+  } catch (const ParameterError& e) {
+    EXPECT_NE(std::string(e.what()).find("rate_sensitivity"), std::string::npos) << e.what();
+  }
+  material = inlineMaterial();
+  material["rate_sensitivity"] = 0.5;  // above the largest accepted, 0.25
   EXPECT_THROW(loadMaterial(ParamValue("/m", material), kNoPresets), ParameterError);
 }
 
