@@ -157,11 +157,31 @@ void BM_StageMaterialAndTearing(benchmark::State& state) {
   state.SetComplexityN(state.range(0));
 }
 
+/// The step right after a tear, which resolves the recoil in recoil_substeps substeps: the settled
+/// yarn's end pulled at twice the breaking force until it tears, then that state stepped once
+/// (copying it back is not timed). Its cost over a plain step's is the recoil's price per tear.
+void BM_StepAfterTear(benchmark::State& state) {
+  Simulator torn = settledYarn(static_cast<int>(state.range(0)));
+  const std::uint32_t end = torn.scene().globalVertex(0, -1);
+  torn.setAppliedForce(end, Eigen::Vector3d(0.0, 0.0, -2.0 * 4.86e8 * torn.scene().edges.area[0]));
+  while (!torn.recoilPending()) torn.step();
+  Simulator sim = torn;
+  for (auto _ : state) {
+    state.PauseTiming();
+    sim = torn;
+    state.ResumeTiming();
+    sim.step();
+    benchmark::ClobberMemory();
+  }
+  state.SetComplexityN(state.range(0));
+}
+
 #define YARN_SIZES Arg(25)->Arg(100)->Arg(1000)->Arg(10000)->Complexity(benchmark::oN)
 
 BENCHMARK(BM_Step)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StepBouncing)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FirstSecondAfterRelease)->YARN_SIZES->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StepAfterTear)->Arg(25)->Arg(1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StageForcesAndPrediction)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StageProjection)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StageTensionEstimate)->YARN_SIZES->Unit(benchmark::kMicrosecond);

@@ -29,6 +29,8 @@ void SimulationParameters::validate() const {
   require(max_projection_iterations >= 1 && max_projection_iterations <= 10000,
           "max_projection_iterations must be in [1, 10000], got " +
               std::to_string(max_projection_iterations));
+  require(recoil_substeps >= 1 && recoil_substeps <= 10000,
+          "recoil_substeps must be in [1, 10000], got " + std::to_string(recoil_substeps));
 }
 
 }  // namespace yarn_tearing

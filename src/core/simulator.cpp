@@ -70,6 +70,7 @@ void Simulator::reset() {
   health_ = StepHealth{};
   time_ = 0.0;
   step_count_ = 0;
+  recoil_pending_ = false;
 }
 
 void Simulator::resetWorkspace() {
@@ -85,16 +86,25 @@ void Simulator::resetWorkspace() {
 }
 
 void Simulator::step() {
+  if (recoil_pending_ && parameters_.recoil_substeps > 1) {
+    advanceInSubsteps();
+  } else {
+    advance();
+  }
+  ++step_count_;
+}
+
+void Simulator::advance() {
   accumulateForces();          // 1
   predictPositions();          // 2
   projectLengthConstraints();  // 3
   estimateTensions();          // 4
   updateMaterial();            // 5
   time_ += parameters_.time_step;
-  ++step_count_;
   const std::size_t events_before = pending_events_.size();
   tear();  // 6
   restoreNonFiniteYarns(events_before);
+  recoil_pending_ = health_.breaks > 0 && health_.restored_yarns.empty();
 }
 
 void Simulator::restoreNonFiniteYarns(std::size_t first_event_of_step) {
@@ -113,6 +123,38 @@ void Simulator::restoreNonFiniteYarns(std::size_t first_event_of_step) {
   }
   // The solvers' warm starts may hold the non-finite values of this step.
   resetWorkspace();
+}
+
+void Simulator::advanceInSubsteps() {
+  VertexSet& vertices = scene_.vertices;
+  step_target_ = vertices.kinematic_target;
+  step_start_ = vertices.position;
+  const double time_step = parameters_.time_step;
+  const double start_time = time_;
+  const int substeps = parameters_.recoil_substeps;
+  parameters_.time_step = time_step / substeps;
+  int breaks = 0;
+  bool tore = false;
+  std::vector<std::uint32_t> restored;
+  for (int i = 1; i <= substeps; ++i) {
+    const double fraction = static_cast<double>(i) / substeps;
+    for (std::size_t v = 0; v < vertices.size(); ++v) {
+      if (vertices.motion[v] != VertexMotion::kKinematic) continue;
+      vertices.kinematic_target[v] = step_start_[v] + fraction * (step_target_[v] - step_start_[v]);
+    }
+    advance();
+    breaks += health_.breaks;
+    tore = tore || recoil_pending_;
+    restored.insert(restored.end(), health_.restored_yarns.begin(), health_.restored_yarns.end());
+  }
+  parameters_.time_step = time_step;
+  vertices.kinematic_target = step_target_;
+  time_ = start_time + time_step;
+  health_.breaks = breaks;
+  std::sort(restored.begin(), restored.end());
+  restored.erase(std::unique(restored.begin(), restored.end()), restored.end());
+  health_.restored_yarns = restored;
+  recoil_pending_ = tore;
 }
 
 void Simulator::accumulateForces() {

@@ -16,6 +16,7 @@ StiffReferenceYarn::StiffReferenceYarn(const YarnSpec& spec, const Eigen::Vector
   velocity_.assign(position_.size(), Eigen::Vector3d::Zero());
   force_.assign(position_.size(), Eigen::Vector3d::Zero());
   pinned_.resize(position_.size());
+  cut_.assign(scene.edges.size(), false);
   for (std::size_t v = 0; v < position_.size(); ++v) pinned_[v] = scene.vertices.isSupport(v);
   rest_length_ = scene.edges.original_rest_length[0];
   stiffness_ = spec.material.curve.youngsModulus() * spec.area() / rest_length_;
@@ -25,6 +26,7 @@ StiffReferenceYarn::StiffReferenceYarn(const YarnSpec& spec, const Eigen::Vector
 }
 
 double StiffReferenceYarn::tension(std::size_t e) const {
+  if (cut_[e]) return 0.0;
   const double length = (position_[e + 1] - position_[e]).norm();
   return std::max(0.0, stiffness_ * (length - rest_length_));
 }
@@ -33,9 +35,7 @@ void StiffReferenceYarn::step(double dt) {
   for (std::size_t v = 0; v < position_.size(); ++v) force_[v] = mass_[v] * gravity_;
   for (std::size_t e = 0; e + 1 < position_.size(); ++e) {
     const Eigen::Vector3d d = position_[e + 1] - position_[e];
-    const double length = d.norm();
-    const double t = std::max(0.0, stiffness_ * (length - rest_length_));
-    const Eigen::Vector3d f = (t / length) * d;
+    const Eigen::Vector3d f = (tension(e) / d.norm()) * d;
     force_[e] += f;
     force_[e + 1] -= f;
   }
@@ -45,6 +45,19 @@ void StiffReferenceYarn::step(double dt) {
     position_[v] += dt * velocity_[v];
   }
   time_ += dt;
+}
+
+void StiffReferenceYarn::setPositions(const std::vector<Eigen::Vector3d>& positions) {
+  position_ = positions;
+  for (Eigen::Vector3d& v : velocity_) v.setZero();
+}
+
+double StiffReferenceYarn::kineticEnergy() const {
+  double energy = 0.0;
+  for (std::size_t v = 0; v < position_.size(); ++v) {
+    if (!pinned_[v]) energy += 0.5 * mass_[v] * velocity_[v].squaredNorm();
+  }
+  return energy;
 }
 
 void StiffReferenceYarn::advance(double duration) {

@@ -43,6 +43,9 @@ struct SimulationParameters {
   ProjectionMethod projection_method = ProjectionMethod::kFastProjection;
   TensionRowWeighting tension_rows = TensionRowWeighting::kForceBalance;
   bool breaking_enabled = true;  ///< false: yarns never tear (yield still acts)
+  /// Substeps of the step after a tear [-] (1 = none): the released elastic energy runs through
+  /// the pieces as a wave at sqrt(E / rho) (~2 km/s), far faster than a step resolves.
+  int recoil_substeps = 64;
   /// Use the general sparse solver even for chains (the banded O(N) path is otherwise chosen).
   bool force_general_solver = false;
 

@@ -30,6 +30,8 @@ class Simulator {
   /// and grasps cleared), drops that yarn's events of this step, and lists it in
   /// lastHealth().restored_yarns; the other yarns go on.
   void step();
+  /// True when the next step() resolves the recoil of a tear in recoil_substeps substeps.
+  bool recoilPending() const { return recoil_pending_; }
 
   /// Replaces the parameters between steps (live tuning: air damping, regularization, breaking
   /// enabled, ...); the next step uses them. Throws std::invalid_argument like the constructor and
@@ -61,6 +63,11 @@ class Simulator {
   std::uint64_t stepCount() const { return step_count_; }
 
  private:
+  /// Stages 1-6 over parameters_.time_step; advances time_.
+  void advance();
+  /// One step of `time_step` in parameters_.recoil_substeps equal substeps, kinematic vertices
+  /// moved linearly to their targets.
+  void advanceInSubsteps();
   void accumulateForces();
   void predictPositions();
   void projectLengthConstraints();
@@ -81,6 +88,9 @@ class Simulator {
   StepHealth health_;
   double time_ = 0.0;
   std::uint64_t step_count_ = 0;
+  bool recoil_pending_ = false;               ///< the last step tore: substep the next one
+  std::vector<Eigen::Vector3d> step_target_;  ///< kinematic targets of the current step [m]
+  std::vector<Eigen::Vector3d> step_start_;   ///< kinematic vertices' start positions [m]
 };
 
 }  // namespace yarn_tearing

@@ -21,6 +21,12 @@ class StiffReferenceYarn {
   void setGravity(const Eigen::Vector3d& gravity) { gravity_ = gravity; }
   /// Advances by `duration` [s] in internal steps (the last one shortened to land on it).
   void advance(double duration);
+  /// Moves the vertices to `positions` [m] (one per vertex), at rest.
+  void setPositions(const std::vector<Eigen::Vector3d>& positions);
+  /// Cuts edge e (between vertices e and e + 1): it carries no tension from now on.
+  void cut(std::size_t e) { cut_[e] = true; }
+  /// Kinetic energy of the free vertices [J].
+  double kineticEnergy() const;
 
   const std::vector<Eigen::Vector3d>& positions() const { return position_; }   ///< [m]
   const std::vector<Eigen::Vector3d>& velocities() const { return velocity_; }  ///< [m/s]
@@ -37,6 +43,7 @@ class StiffReferenceYarn {
   std::vector<Eigen::Vector3d> force_;
   std::vector<double> mass_;
   std::vector<bool> pinned_;
+  std::vector<bool> cut_;  ///< per edge
   Eigen::Vector3d gravity_;
   double stiffness_ = 0.0;    ///< [N/m]
   double rest_length_ = 0.0;  ///< [m]
