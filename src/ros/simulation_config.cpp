@@ -139,6 +139,8 @@ SimulationParameters loadPhysics(const PrivateParams& params) {
   params.read("projection_method",
               [&](const ParamValue& v) { p.projection_method = parseProjectionMethod(v); });
   params.read("breaking_enabled", [&](const ParamValue& v) { p.breaking_enabled = v.boolean(); });
+  params.read("recoil_substeps",
+              [&](const ParamValue& v) { p.recoil_substeps = v.integer(1, 10000); });
   try {
     p.validate();
   } catch (const std::invalid_argument& e) {
