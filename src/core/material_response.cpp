@@ -23,6 +23,7 @@ double updatedPlasticStrain(double current, double stress, double breaking_strai
 /// a constant-rate test reads exactly and which changes slowly enough not to feed back.
 void updateRateFactor(const Material& material, double time_step, double previous_strain,
                       bool loaded, std::size_t e, EdgeSet& edges) {
+  if (material.rate_sensitivity == 0.0) return;  // f stays 1
   if (!loaded) {
     edges.loading_time[e] = 0.0;
     edges.rate_factor[e] = 1.0;
