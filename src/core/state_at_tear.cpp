@@ -24,7 +24,9 @@ TearEvent tearEventOf(const Scene& scene, std::size_t edge, double time, double 
   event.strain = std::min(length_strain, breaking_strain);
   event.plastic_strain = edges.plastic_strain[edge];
   const double elastic_stress = curve.youngsModulus() * (event.strain - event.plastic_strain);
+  // The curve at the edge's loading rate: the material's with its stresses times f.
   const double carried =
+      edges.rate_factor[edge] *
       std::max(0.0, std::min(elastic_stress, curve.stressAtStrain(event.strain)));
   event.stress = std::max(0.0, std::min(edges.stress[edge], carried));
   event.tension = event.stress * edges.area[edge];

@@ -16,7 +16,8 @@ namespace yarn_tearing {
 ///   strain (ε_b of the curve times the edge's strength factor f);
 /// - stress σ = min(T_est / A, σ_c(ε)) and tension T = σ·A, where σ_c(ε) = max(0, min(E·(ε − ε_p),
 ///   curve(ε))) is what that strain carries: elastically from the plastic strain ε_p, at most the
-///   loading curve; so σ ≤ the curve at the breaking strain;
+///   loading curve; so σ ≤ the curve at the breaking strain (both times the edge's rate factor,
+///   EdgeSet::rate_factor, 1 for a rate-independent material);
 /// - plastic_strain = ε_p; strain_rate = (ε − ε_previous) / Δt with ε_previous the strain the
 ///   edge had before this step.
 /// On a slow pull the estimate and the length agree, and the event reports σ_b·A at ε_b.
