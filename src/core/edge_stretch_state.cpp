@@ -27,6 +27,14 @@ double EdgeStretchState::settle(const EdgeSet& edges, std::size_t e, double m) {
   return wouldSwitch(e, m) ? set(edges, e, !saturated_[e]) : 0.0;
 }
 
+double EdgeStretchState::multiplierAtLength(const EdgeSet& edges, std::size_t e,
+                                            double length) const {
+  const double stretch = length - edges.rest_length[e];
+  if (!(stretch > 0.0)) return 0.0;
+  if (stretch <= max_stretch_[e]) return stretch / compliant_shift_[e];
+  return (max_stretch_[e] + (stretch - max_stretch_[e]) / kStopCompliance) / compliant_shift_[e];
+}
+
 double EdgeStretchState::set(const EdgeSet& edges, std::size_t e, bool saturated) {
   // Held: limit = L + s_max + r s (m - s_max / s), r = kStopCompliance, continuous with the
   // compliant L + s m at the switch. r > 0 keeps the Newton step's system quasi-definite.

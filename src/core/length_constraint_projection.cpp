@@ -23,10 +23,48 @@ ProjectionResult LengthConstraintProjection::project(
   product_.resize(q);
   stretch_.resize(q);
   multiplier_.assign(q, 0.0);
-  if (parameters.projection_method == ProjectionMethod::kGaussSeidel) {
-    return projectGaussSeidel(position, edges, parameters);
+  const ProjectionResult result = parameters.projection_method == ProjectionMethod::kGaussSeidel
+                                      ? projectGaussSeidel(position, edges, parameters)
+                                      : projectFast(position, edges, parameters, gram);
+  holdEdgesBetweenSupports(position, edges);
+  return result;
+}
+
+void LengthConstraintProjection::holdEdgesBetweenSupports(
+    const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges) {
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const std::uint32_t a = edges.vertex_a[e];
+    const std::uint32_t b = edges.vertex_b[e];
+    if (!edges.intact(e) || inverse_mass_[a] + inverse_mass_[b] > 0.0) continue;
+    multiplier_[e] =
+        stretch_state_.multiplierAtLength(edges, e, (position[b] - position[a]).norm());
   }
-  return projectFast(position, edges, parameters, gram);
+}
+
+double LengthConstraintProjection::forceMismatch(const std::vector<Eigen::Vector3d>& position,
+                                                 const EdgeSet& edges) {
+  // dx_v = (x''_v - x~_v) - w_v sum_e m_e u_e(x''): how far each vertex is from where the final
+  // constraint forces, acting along the final edge directions, would have put it.
+  for (std::size_t v = 0; v < position.size(); ++v) {
+    vertex_sum_[v] = position[v] - predicted_[v];
+    vertex_scale_[v] = 0.0;
+  }
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (!candidate_[e]) continue;
+    const std::uint32_t a = edges.vertex_a[e];
+    const std::uint32_t b = edges.vertex_b[e];
+    vertex_sum_[a] -= (inverse_mass_[a] * multiplier_[e]) * direction_[e];
+    vertex_sum_[b] += (inverse_mass_[b] * multiplier_[e]) * direction_[e];
+    vertex_scale_[a] = std::max(vertex_scale_[a], limit_[e]);
+    vertex_scale_[b] = std::max(vertex_scale_[b], limit_[e]);
+  }
+  double mismatch = 0.0;
+  for (std::size_t v = 0; v < position.size(); ++v) {
+    if (inverse_mass_[v] > 0.0 && vertex_scale_[v] > 0.0) {
+      mismatch = std::max(mismatch, vertex_sum_[v].norm() / vertex_scale_[v]);
+    }
+  }
+  return mismatch;
 }
 
 double LengthConstraintProjection::evaluate(const std::vector<Eigen::Vector3d>& position,
@@ -125,16 +163,28 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
   slack_tolerance_ = 0.1 * parameters.constraint_tolerance;
   newton_taut_.resize(edges.size());
   vertex_sum_.resize(position.size());
+  vertex_scale_.resize(position.size());
   predicted_ = position;
   ProjectionResult result;
   result.max_violation = evaluate(position, edges);
   // Warm start: the edges that were taut at the end of the last step most likely still are.
   was_taut_.resize(edges.size(), 0);
   for (std::size_t e = 0; e < edges.size(); ++e) active_[e] |= candidate_[e] & was_taut_[e];
+  bool use_newton = false;
   for (;;) {
     result.converged = result.max_violation <= parameters.constraint_tolerance;
+    if (result.converged) {
+      // Held to their limits, but do the constraint forces act along the final edge directions?
+      // Where they act along the directions the iterations started from, a light vertex on a
+      // taut span is flung across the line (the span's transverse stiffness treated explicitly,
+      // unstable for dt^2 T / (m l) > 1): then finish with Newton steps, whose geometric
+      // stiffness makes that part implicit too.
+      result.force_mismatch = forceMismatch(position, edges);
+      result.converged = result.force_mismatch <= parameters.constraint_tolerance;
+      use_newton = !result.converged;
+    }
     if (result.converged || result.iterations >= parameters.max_projection_iterations) break;
-    if (result.iterations >= kFastIterations) {
+    if (use_newton || result.iterations >= kFastIterations) {
       // The fast iterations stall (a light yarn swung hard by a heavy end): finish with Newton
       // steps that include the geometric stiffness.
       for (std::size_t e = 0; e < edges.size(); ++e) {

@@ -180,6 +180,7 @@ void Simulator::projectLengthConstraints() {
   health_.projection_iterations = result.iterations;
   health_.max_constraint_violation = result.max_violation;
   health_.projection_converged = result.converged;
+  health_.force_mismatch = result.force_mismatch;
   const double dt = parameters_.time_step;
   for (std::size_t v = 0; v < vertices.size(); ++v) {
     if (vertices.motion[v] == VertexMotion::kFree) {
@@ -196,6 +197,7 @@ void Simulator::estimateTensions() {
   input.time_step = parameters_.time_step;
   input.regularization = parameters_.regularization;
   input.rows = parameters_.tension_rows;
+  input.source = parameters_.tension_source;
   health_.tension_residual =
       work_.estimator.estimate(input, scene_.edges, work_.gram, work_.constraint_tension);
 

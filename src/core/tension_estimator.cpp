@@ -4,6 +4,24 @@
 
 namespace yarn_tearing {
 
+void TensionEstimator::solve(const EdgeSet& edges, double regularization, EdgeGramSolver& gram,
+                             std::vector<double>& tension) {
+  anchor_.assign(tension.begin(), tension.end());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const std::uint32_t a = edges.vertex_a[e];
+    const std::uint32_t b = edges.vertex_b[e];
+    // Right-hand side A^T b: a tension T pulls a along +n and b along -n.
+    tension[e] = direction_[e].dot(weight_[a] * target_[a] - weight_[b] * target_[b]);
+  }
+  GramSystem system;
+  system.direction = &direction_;
+  system.vertex_weight = &weight_;
+  system.active = &active_;
+  system.regularization = regularization;
+  system.anchor = &anchor_;
+  gram.solve(edges, system, tension);
+}
+
 double TensionEstimator::estimate(const TensionEstimateInput& input, const EdgeSet& edges,
                                   EdgeGramSolver& gram, std::vector<double>& tension) {
   const VertexSet& vertices = *input.vertices;
@@ -28,7 +46,6 @@ double TensionEstimator::estimate(const TensionEstimateInput& input, const EdgeS
   }
   direction_.resize(q);
   active_.resize(q);
-  anchor_.assign(tension.begin(), tension.end());
   for (std::size_t e = 0; e < q; ++e) {
     const std::uint32_t a = edges.vertex_a[e];
     const std::uint32_t b = edges.vertex_b[e];
@@ -36,16 +53,9 @@ double TensionEstimator::estimate(const TensionEstimateInput& input, const EdgeS
     const double length = d.norm();
     active_[e] = edges.intact(e) && length > 0.0;
     direction_[e] = active_[e] ? Eigen::Vector3d(d / length) : Eigen::Vector3d::Zero();
-    // Right-hand side A^T b: a tension T pulls a along +n and b along -n.
-    tension[e] = direction_[e].dot(weight_[a] * target_[a] - weight_[b] * target_[b]);
   }
-  GramSystem system;
-  system.direction = &direction_;
-  system.vertex_weight = &weight_;
-  system.active = &active_;
-  system.regularization = input.regularization;
-  system.anchor = &anchor_;
-  gram.solve(edges, system, tension);
+  if (input.source == TensionSource::kLeastSquares)
+    solve(edges, input.regularization, gram, tension);
 
   // Residual A T - b, accumulated per vertex in target_ (which is no longer needed).
   for (std::size_t e = 0; e < q; ++e) {

@@ -31,6 +31,11 @@ class EdgeStretchState {
   const std::vector<double>& shift() const { return shift_; }
   /// B per edge [m]: L, or L + (1 - 10^-6) s_max when saturated.
   const std::vector<double>& baseLength() const { return base_length_; }
+  /// The multiplier [kg m] at which edge e, `length` [m] long, is exactly at its limit: the
+  /// force (times dt^2) of a stiff spring of the edge's compliance stretched to that length, and
+  /// of the stop past its largest stretch; 0 when the edge is not stretched. For an edge whose
+  /// vertices are all pinned or kinematic, which no projection can move: its length is given.
+  double multiplierAtLength(const EdgeSet& edges, std::size_t e, double length) const;
   /// The limit B + S m [m] of edge e under multiplier `m` [kg m].
   double limit(std::size_t e, double m) const { return base_length_[e] + shift_[e] * m; }
 

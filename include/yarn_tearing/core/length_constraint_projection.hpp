@@ -19,7 +19,11 @@ namespace yarn_tearing {
 struct ProjectionResult {
   int iterations = 0;          ///< iterations (direction updates) or Gauss–Seidel sweeps
   double max_violation = 0.0;  ///< max (length - limit) / limit over intact edges [-]
-  bool converged = false;      ///< max_violation <= tolerance
+  /// max over free vertices of |(x'' - x~) - W J(x'')^T m| / l [-]: how far the constraint
+  /// forces, taken along the final edge directions, are from explaining each vertex's
+  /// correction (l its longest incident limit). Fast projection only.
+  double force_mismatch = 0.0;
+  bool converged = false;  ///< max_violation and force_mismatch <= tolerance
 };
 
 /// Stage 3: limits every intact edge, stretch only, to
@@ -42,7 +46,8 @@ struct ProjectionResult {
 /// block principal pivoting over a banded (chains) or sparse solve; a TautFrontier takes in a
 /// whole run of slack edges that a pull straightens at once, where plain pivoting would take one
 /// edge per pass. Edges whose vertices are all pinned or kinematic cannot be corrected and are
-/// not counted.
+/// not counted in the violation; their force is that of a stiff spring of the same compliance
+/// (and stop) at the length their holders give them, so they carry tension and can tear.
 class LengthConstraintProjection {
  public:
   /// Projects `position` in place. `limits` gives each edge's compliance c [m/N] and largest
@@ -59,6 +64,11 @@ class LengthConstraintProjection {
   }
 
  private:
+  /// Sets the multiplier of each intact edge between two pinned or kinematic vertices from its
+  /// length (EdgeStretchState::multiplierAtLength).
+  void holdEdgesBetweenSupports(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
+  /// ProjectionResult::force_mismatch of `position` (directions from the last evaluate).
+  double forceMismatch(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
   /// Fills directions, residuals and the active set; returns the max relative violation.
   double evaluate(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
   ProjectionResult projectFast(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
@@ -91,6 +101,7 @@ class LengthConstraintProjection {
   std::vector<std::uint8_t> newton_taut_;    ///< edges the Newton step takes as equalities
   static constexpr int kFastIterations = 6;  ///< fast iterations before Newton takes over
   std::vector<Eigen::Vector3d> vertex_sum_;  ///< per-vertex sum of multiplier * direction
+  std::vector<double> vertex_scale_;         ///< longest incident limit per vertex [m]
   double slack_tolerance_ = 0.0;  ///< relative stretch a slack edge may show before it joins
   static constexpr int kMaxPivotingPasses = 30;  ///< active-set passes per iteration
 };

@@ -25,6 +25,20 @@ enum class TensionRowWeighting {
   kVelocity,
 };
 
+/// Where each edge's tension (stage 4) comes from.
+enum class TensionSource {
+  /// The force of the compliant length constraint (departure 6 of the README): the tension of the
+  /// stiff spring, compliance c = L0 / (E A), at the length the step ends with. This is the exact
+  /// solution of the paper's least squares whenever the vertices' motion determines the tensions,
+  /// and it stays right where the motion does not: a span between two holders, whose common
+  /// tension moves no free vertex.
+  kConstraintForce,
+  /// The paper's §3.2 estimate: the regularized least squares over the free vertices' motion,
+  /// anchored at the constraint force. Ill-posed for a span held at both ends (its common tension
+  /// is then set by the vertices' tiny sideways motion).
+  kLeastSquares,
+};
+
 /// Parameters of the whole simulation, shared by all yarns.
 struct SimulationParameters {
   double time_step = 1.0e-3;                                   ///< physics step dt [s]
@@ -41,6 +55,9 @@ struct SimulationParameters {
   double constraint_tolerance = 1.0e-6;
   int max_projection_iterations = 50;  ///< Newton steps (or Gauss–Seidel sweeps) per step
   ProjectionMethod projection_method = ProjectionMethod::kFastProjection;
+  TensionSource tension_source = TensionSource::kConstraintForce;  ///< stage 4's tension
+  /// Rows of the least squares (with TensionSource::kLeastSquares; its residual is reported in
+  /// StepHealth either way).
   TensionRowWeighting tension_rows = TensionRowWeighting::kForceBalance;
   bool breaking_enabled = true;  ///< false: yarns never tear (yield still acts)
   /// Substeps of the step after a tear [-] (1 = none): the released elastic energy runs through

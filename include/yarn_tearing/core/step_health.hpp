@@ -9,9 +9,12 @@ namespace yarn_tearing {
 struct StepHealth {
   double max_constraint_violation = 0.0;  ///< max (length - limit) / limit after projection [-]
   int projection_iterations = 0;          ///< Newton steps or sweeps used
-  bool projection_converged = true;       ///< violation within constraint_tolerance
-  double tension_residual = 0.0;          ///< |A T - b| / |b| of the tension least squares [-]
-  int breaks = 0;                         ///< edges torn in this step
+  bool projection_converged = true;       ///< violation and force mismatch within tolerance
+  /// Largest distance [-, per edge length] between a vertex's correction and the one the final
+  /// constraint forces along the final edge directions give (ProjectionResult::force_mismatch).
+  double force_mismatch = 0.0;
+  double tension_residual = 0.0;  ///< |A T - b| / |b| of the tension least squares [-]
+  int breaks = 0;                 ///< edges torn in this step
   /// Yarns (scene indices) this step left with a non-finite value, restored to their initial
   /// state (Simulator::step); empty in a healthy step.
   std::vector<std::uint32_t> restored_yarns;

@@ -19,6 +19,7 @@ struct TensionEstimateInput {
   double time_step = 0.0;                                         ///< dt [s]
   double regularization = 0.0;                                    ///< lambda [-]
   TensionRowWeighting rows = TensionRowWeighting::kForceBalance;  ///< row weighting
+  TensionSource source = TensionSource::kConstraintForce;         ///< solve, or check T'
 };
 
 /// Stage 4 (paper §3.2): the tensions T_e [N] that stiff springs would have needed to carry the
@@ -33,13 +34,22 @@ struct TensionEstimateInput {
 /// not (a taut span between two supports moves no free vertex) take the constraint's force rather
 /// than 0. Pinned and kinematic vertices' rows are left out. The normal equations are solved by
 /// EdgeGramSolver: O(N) for chains.
+///
+/// With TensionSource::kConstraintForce (the default) nothing is solved: T = T', and the
+/// residual |A T' - b| / |b| tells how well the constraint forces explain the free vertices'
+/// motion (the paper's equation, checked rather than solved).
 class TensionEstimator {
  public:
-  /// Overwrites `tension` (in: the prior T'_e, out: the estimate); returns |A T - b| / |b| [-].
+  /// `tension` in: the prior T'_e [N]; out: the estimate (unchanged with kConstraintForce).
+  /// Returns the relative residual |A T - b| / |b| [-] of the force balances.
   double estimate(const TensionEstimateInput& input, const EdgeSet& edges, EdgeGramSolver& gram,
                   std::vector<double>& tension);
 
  private:
+  /// Solves the least squares in place (`tension`: T' in, estimate out).
+  void solve(const EdgeSet& edges, double regularization, EdgeGramSolver& gram,
+             std::vector<double>& tension);
+
   std::vector<double> weight_;              ///< s_v^2 for free vertices, else 0
   std::vector<Eigen::Vector3d> target_;     ///< b_v: force the tensions must explain [N]
   std::vector<Eigen::Vector3d> direction_;  ///< unit edge directions
