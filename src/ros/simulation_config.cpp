@@ -91,6 +91,17 @@ ProjectionMethod parseProjectionMethod(const ParamValue& value) {
   value.fail("'fast_projection' or 'gauss_seidel'");
 }
 
+TensionSource parseTensionSource(const ParamValue& value) {
+  const std::string source = value.string(false);
+  if (source == "constraint_force") {
+    return TensionSource::kConstraintForce;
+  }
+  if (source == "least_squares") {
+    return TensionSource::kLeastSquares;
+  }
+  value.fail("'constraint_force' or 'least_squares'");
+}
+
 NodeSettings loadNodeSettings(const PrivateParams& params) {
   NodeSettings node;
   params.read("frame_id", [&](const ParamValue& v) { node.frame_id = v.string(false); });
@@ -114,6 +125,8 @@ SimulationParameters loadPhysics(const PrivateParams& params) {
   params.read("gravity", [&](const ParamValue& v) {
     p.gravity = v.boundedVector3(bounds::kMaxGravity, "m/s^2");
   });
+  params.read("tension_estimate",
+              [&](const ParamValue& v) { p.tension_source = parseTensionSource(v); });
   params.read("regularization", [&](const ParamValue& v) {
     // [0, 1), as the core and the README say (number() checks a closed range)
     const std::string allowed = "a finite number in [0, 1)";
