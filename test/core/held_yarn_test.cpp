@@ -146,6 +146,25 @@ TEST_P(HeldYarn, GraspPulledSidewaysBalancesATriangleOfForces) {
       << ", triangle " << triangle.transpose();
 }
 
+// An edge between two pins, which no projection can move: it carries the tension of its stretch,
+// its holders feel it, and it tears when its holders are drawn to its breaking length.
+TEST(HeldYarnEdge, EdgeBetweenTwoPinsCarriesItsStretchAndTears) {
+  const double pretension = 2.0;  // [N]
+  YarnSpec spec = spanAlongX(2);
+  spec.pinned = {0, -1};
+  Simulator sim(parametersWithoutGravity(), stretchedScene(spec, pretension));
+  sim.step();
+  EXPECT_NEAR(sim.scene().edges.tension[0], pretension, 1e-6 * pretension);
+  EXPECT_NEAR(sim.supportForce(0).x(), pretension, 1e-6 * pretension);
+  EXPECT_NEAR(sim.supportForce(1).x(), -pretension, 1e-6 * pretension);
+  EXPECT_TRUE(sim.takeTearEvents().empty());
+  // Pinned again past the breaking length: it tears in the next step.
+  const double breaking_strain = spec.material.curve.breakingStrain();
+  sim.setKinematicTarget(1, Eigen::Vector3d(spec.length * (1.0 + 1.01 * breaking_strain), 0, 0));
+  sim.step();
+  EXPECT_EQ(sim.takeTearEvents().size(), 1u);
+}
+
 INSTANTIATE_TEST_SUITE_P(StepsAndGravity, HeldYarn,
                          ::testing::Combine(::testing::Values(1.0e-3, 1.0e-4), ::testing::Bool()));
 
