@@ -4,6 +4,8 @@
 //     --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+
 #include "yarn_tearing/core/explicit_forces.hpp"
 #include "yarn_tearing/core/length_constraint_projection.hpp"
 #include "yarn_tearing/core/material_response.hpp"
@@ -80,6 +82,30 @@ void BM_FirstSecondAfterRelease(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(state.iterations()) * kSteps,
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.SetComplexityN(state.range(0));
+}
+
+/// A span pinned at both ends with a 2 N pretension, under gravity, after 0.05 s: the robot's
+/// case (a yarn between two holders). Arguments: vertices, and the step as 10^-k s. At
+/// dt = 1e-4 s its light vertices' sideways stiffness is past what the fast iterations treat
+/// stably (omega dt > 1), and Newton steps finish each projection (README, departure 1).
+void BM_HeldSpan(benchmark::State& state) {
+  const int vertices = static_cast<int>(state.range(0));
+  YarnSpec spec = benchYarn(vertices);
+  spec.direction = Eigen::Vector3d::UnitX();
+  spec.pinned = {0, -1};
+  spec.end_mass = 0.0;
+  Scene scene = buildScene({spec});
+  const double strain = 2.0 / (spec.material.curve.youngsModulus() * spec.area());
+  for (Eigen::Vector3d& x : scene.vertices.position) x *= 1.0 + strain;
+  SimulationParameters parameters;
+  parameters.time_step = std::pow(10.0, -static_cast<double>(state.range(1)));
+  Simulator sim(parameters, scene);
+  while (sim.time() < 0.05) sim.step();
+  for (auto _ : state) {
+    sim.step();
+    benchmark::ClobberMemory();
+  }
+  state.counters["iterations/step"] = sim.lastHealth().projection_iterations;
 }
 
 /// Stages 1 and 2 (forces with the soft springs, then symplectic Euler) on the settled state. The
@@ -182,6 +208,12 @@ BENCHMARK(BM_Step)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StepBouncing)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FirstSecondAfterRelease)->YARN_SIZES->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StepAfterTear)->Arg(25)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_HeldSpan)
+    ->Args({25, 3})
+    ->Args({25, 4})
+    ->Args({1000, 3})
+    ->Args({1000, 4})
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StageForcesAndPrediction)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StageProjection)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StageTensionEstimate)->YARN_SIZES->Unit(benchmark::kMicrosecond);

@@ -1,5 +1,7 @@
 #include "yarn_tearing/core/stiff_newton_step.hpp"
 
+#include <algorithm>
+
 namespace yarn_tearing {
 namespace {
 
@@ -14,22 +16,25 @@ void addBlock(std::vector<Eigen::Triplet<double>>& triplets, int row, int col,
 
 bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
                             const std::vector<double>& inverse_mass, const EdgeSet& edges,
-                            const EdgeStretchState& stretch_state,
+                            const EdgeIncidence& incidence, const EdgeStretchState& stretch_state,
                             const std::vector<std::uint8_t>& taut,
                             const std::vector<Eigen::Vector3d>& position,
                             const std::vector<double>& multiplier) {
+  // Rows in vertex order, each taut edge's row right after its later vertex's: a chain's system
+  // is then banded, and the natural ordering factorizes it in O(N) without fill.
   const std::size_t n = position.size();
   vertex_row_.assign(n, -1);
+  edge_row_.assign(edges.size(), -1);
   int rows = 0;
   for (std::size_t v = 0; v < n; ++v) {
     if (inverse_mass[v] > 0.0) {
       vertex_row_[v] = rows;
       rows += 3;
     }
-  }
-  edge_row_.assign(edges.size(), -1);
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    if (taut[e]) edge_row_[e] = rows++;
+    for (const std::uint32_t* it = incidence.begin(v); it != incidence.end(v); ++it) {
+      const std::uint32_t e = *it;
+      if (taut[e] && std::max(edges.vertex_a[e], edges.vertex_b[e]) == v) edge_row_[e] = rows++;
+    }
   }
   triplets_.clear();
   rhs_.setZero(rows);
@@ -73,6 +78,12 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
   }
   matrix_.resize(rows, rows);
   matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
+  if (banded_) {
+    banded_factorization_.ldlt.compute(matrix_);
+    if (banded_factorization_.ldlt.info() != Eigen::Success) return false;
+    solution_ = banded_factorization_.ldlt.solve(rhs_);
+    return banded_factorization_.ldlt.info() == Eigen::Success && solution_.allFinite();
+  }
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(matrix_);
   if (ldlt.info() != Eigen::Success) return false;
   solution_ = ldlt.solve(rhs_);
@@ -100,6 +111,10 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
                             std::vector<std::uint8_t>& taut, std::vector<Eigen::Vector3d>& position,
                             std::vector<double>& multiplier) {
   for (std::size_t e = 0; e < edges.size(); ++e) taut[e] = taut[e] & movable[e];
+  banded_ = true;
+  for (std::size_t e = 0; e < edges.size() && banded_; ++e) {
+    banded_ = edges.vertex_b[e] == edges.vertex_a[e] + 1;
+  }
   pass_multiplier_.resize(edges.size());
   stretch_.resize(edges.size());
   frontier_.reset(edges.size());
@@ -107,7 +122,8 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
   // push, take in the slack ones that the step would stretch (with the taut frontier), solve
   // again.
   for (int pass = 0;; ++pass) {
-    if (!solve(predicted, inverse_mass, edges, stretch_state, taut, position, multiplier)) {
+    if (!solve(predicted, inverse_mass, edges, incidence, stretch_state, taut, position,
+               multiplier)) {
       return;
     }
     if (pass == kMaxPivotingPasses) break;

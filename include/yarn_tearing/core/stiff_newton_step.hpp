@@ -39,9 +39,9 @@ class StiffNewtonStep {
  private:
   /// Assembles and solves the system for the current `taut` set into solution_.
   bool solve(const std::vector<Eigen::Vector3d>& predicted, const std::vector<double>& inverse_mass,
-             const EdgeSet& edges, const EdgeStretchState& stretch_state,
-             const std::vector<std::uint8_t>& taut, const std::vector<Eigen::Vector3d>& position,
-             const std::vector<double>& multiplier);
+             const EdgeSet& edges, const EdgeIncidence& incidence,
+             const EdgeStretchState& stretch_state, const std::vector<std::uint8_t>& taut,
+             const std::vector<Eigen::Vector3d>& position, const std::vector<double>& multiplier);
 
   /// Length minus base length [m] of a slack edge after the solved step, to first order.
   double linearizedStretch(const EdgeSet& edges, const EdgeStretchState& stretch_state,
@@ -49,6 +49,18 @@ class StiffNewtonStep {
 
   static constexpr int kMaxPivotingPasses = 30;    ///< re-solves after changing the taut set
   static constexpr double kSlackTolerance = 1e-9;  ///< stretch (per rest length) that makes taut
+  /// Every edge joins consecutive vertices (chains): the rows are then banded and factorized in
+  /// natural order, O(N); other graphs use Eigen's default (AMD) ordering.
+  bool banded_ = false;
+  /// Factorization for banded systems, kept so its storage is reused; copies start without one.
+  struct BandedFactorization {
+    BandedFactorization() = default;
+    BandedFactorization(const BandedFactorization&) {}
+    BandedFactorization& operator=(const BandedFactorization&) { return *this; }
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
+        ldlt;
+  };
+  BandedFactorization banded_factorization_;
   std::vector<int> vertex_row_;  ///< first row of each free vertex, -1 for supports
   std::vector<int> edge_row_;    ///< row of each taut edge, -1 otherwise
   std::vector<Eigen::Triplet<double>> triplets_;
