@@ -108,6 +108,51 @@ void BM_HeldSpan(benchmark::State& state) {
   state.counters["iterations/step"] = sim.lastHealth().projection_iterations;
 }
 
+/// A woven-like grid of side x side vertices joined along rows and columns (warp and weft, 12.5 mm
+/// segments of the bench yarn, no diagonals), hanging from its pinned top row, settled with air
+/// damping for 0.2 s: the general sparse path of the solvers.
+void BM_GridAtRest(benchmark::State& state) {
+  const int side = static_cast<int>(state.range(0));
+  const double spacing = 0.0125;
+  const YarnSpec yarn_spec = benchYarn(2);
+  Scene scene;
+  Yarn yarn;
+  yarn.name = "grid";
+  yarn.material = yarn_spec.material;
+  yarn.radius = yarn_spec.radius;
+  yarn.num_vertices = static_cast<std::uint32_t>(side * side);
+  scene.yarns.push_back(yarn);
+  const double vertex_mass = 2.0 * yarn_spec.linearDensity() * spacing;
+  auto id = [side](int row, int col) { return static_cast<std::uint32_t>(row * side + col); };
+  for (int row = 0; row < side; ++row) {
+    for (int col = 0; col < side; ++col) {
+      scene.vertices.add(Eigen::Vector3d(col * spacing, 0.0, -row * spacing), vertex_mass,
+                         2.0 * spacing, 0);
+      if (row == 0) scene.vertices.motion.back() = VertexMotion::kPinned;
+    }
+  }
+  for (int row = 0; row < side; ++row) {
+    for (int col = 0; col < side; ++col) {
+      if (col + 1 < side) {
+        scene.edges.add(id(row, col), id(row, col + 1), 0, spacing, yarn_spec.area(), 1.0);
+      }
+      if (row + 1 < side) {
+        scene.edges.add(id(row, col), id(row + 1, col), 0, spacing, yarn_spec.area(), 1.0);
+      }
+    }
+  }
+  scene.yarns[0].num_edges = static_cast<std::uint32_t>(scene.edges.size());
+  SimulationParameters parameters;
+  parameters.air_damping = 0.05;
+  Simulator sim(parameters, scene);
+  while (sim.time() < 0.2) sim.step();
+  for (auto _ : state) {
+    sim.step();
+    benchmark::ClobberMemory();
+  }
+  state.counters["iterations/step"] = sim.lastHealth().projection_iterations;
+}
+
 /// Stages 1 and 2 (forces with the soft springs, then symplectic Euler) on the settled state. The
 /// vertices go on moving under them alone, which changes nothing in their cost.
 void BM_StageForcesAndPrediction(benchmark::State& state) {
@@ -214,6 +259,7 @@ BENCHMARK(BM_HeldSpan)
     ->Args({1000, 3})
     ->Args({1000, 4})
     ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_GridAtRest)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StageForcesAndPrediction)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StageProjection)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StageTensionEstimate)->YARN_SIZES->Unit(benchmark::kMicrosecond);
