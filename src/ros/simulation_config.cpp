@@ -80,28 +80,6 @@ void warnUnknownKeys(const ros::NodeHandle& private_nh, std::set<std::string> kn
   }
 }
 
-ProjectionMethod parseProjectionMethod(const ParamValue& value) {
-  const std::string method = value.string(false);
-  if (method == "fast_projection") {
-    return ProjectionMethod::kFastProjection;
-  }
-  if (method == "gauss_seidel") {
-    return ProjectionMethod::kGaussSeidel;
-  }
-  value.fail("'fast_projection' or 'gauss_seidel'");
-}
-
-TensionSource parseTensionSource(const ParamValue& value) {
-  const std::string source = value.string(false);
-  if (source == "constraint_force") {
-    return TensionSource::kConstraintForce;
-  }
-  if (source == "least_squares") {
-    return TensionSource::kLeastSquares;
-  }
-  value.fail("'constraint_force' or 'least_squares'");
-}
-
 NodeSettings loadNodeSettings(const PrivateParams& params) {
   NodeSettings node;
   params.read("frame_id", [&](const ParamValue& v) { node.frame_id = v.string(false); });
@@ -125,8 +103,11 @@ SimulationParameters loadPhysics(const PrivateParams& params) {
   params.read("gravity", [&](const ParamValue& v) {
     p.gravity = v.boundedVector3(bounds::kMaxGravity, "m/s^2");
   });
-  params.read("tension_estimate",
-              [&](const ParamValue& v) { p.tension_source = parseTensionSource(v); });
+  params.read("tension_estimate", [&](const ParamValue& v) {
+    p.tension_source =
+        v.choice<TensionSource>({{"constraint_force", TensionSource::kConstraintForce},
+                                 {"least_squares", TensionSource::kLeastSquares}});
+  });
   params.read("regularization", [&](const ParamValue& v) {
     // [0, 1), as the core and the README say (number() checks a closed range)
     const std::string allowed = "a finite number in [0, 1)";
@@ -149,8 +130,11 @@ SimulationParameters loadPhysics(const PrivateParams& params) {
               [&](const ParamValue& v) { p.constraint_tolerance = v.number(1.0e-15, 0.1, ""); });
   params.read("max_projection_iterations",
               [&](const ParamValue& v) { p.max_projection_iterations = v.integer(1, 10000); });
-  params.read("projection_method",
-              [&](const ParamValue& v) { p.projection_method = parseProjectionMethod(v); });
+  params.read("projection_method", [&](const ParamValue& v) {
+    p.projection_method =
+        v.choice<ProjectionMethod>({{"fast_projection", ProjectionMethod::kFastProjection},
+                                    {"gauss_seidel", ProjectionMethod::kGaussSeidel}});
+  });
   params.read("breaking_enabled", [&](const ParamValue& v) { p.breaking_enabled = v.boolean(); });
   params.read("recoil_substeps",
               [&](const ParamValue& v) { p.recoil_substeps = v.integer(1, 10000); });

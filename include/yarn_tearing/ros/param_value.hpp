@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace yarn_tearing {
@@ -42,6 +43,18 @@ class ParamValue {
   Eigen::Vector3d vector3(const std::string& unit) const;
   /// A list of 3 finite numbers whose norm is at most `max_norm` (in `unit`).
   Eigen::Vector3d boundedVector3(double max_norm, const std::string& unit) const;
+  /// One of the named choices: the value paired with the string given, e.g.
+  /// choice<ProjectionMethod>({{"fast_projection", kFast}, {"gauss_seidel", kGaussSeidel}}).
+  template <typename T>
+  T choice(const std::vector<std::pair<std::string, T>>& choices) const {
+    const std::string given = string(false);
+    std::string allowed;
+    for (const auto& [name, value] : choices) {
+      if (name == given) return value;
+      allowed += (allowed.empty() ? "'" : " or '") + name + "'";
+    }
+    fail(allowed);
+  }
   /// A list of integers.
   std::vector<int> integerList() const;
 
