@@ -44,10 +44,13 @@ void LengthConstraintProjection::holdEdgesBetweenSupports(
 double LengthConstraintProjection::forceMismatch(const std::vector<Eigen::Vector3d>& position,
                                                  const EdgeSet& edges) {
   // dx_v = (x''_v - x~_v) - w_v sum_e m_e u_e(x''): how far each vertex is from where the final
-  // constraint forces, acting along the final edge directions, would have put it.
+  // constraint forces, acting along the final edge directions, would have put it. Counted only
+  // where the vertex's sideways stiffness is one the fast iterations treat unstably:
+  // (omega dt)^2 = w_v sum_e m_e / l_e > 1 (m_e = T_e dt^2), a light vertex on a taut edge.
   for (std::size_t v = 0; v < position.size(); ++v) {
     vertex_sum_[v] = position[v] - predicted_[v];
     vertex_scale_[v] = 0.0;
+    sideways_stiffness_[v] = 0.0;
   }
   for (std::size_t e = 0; e < edges.size(); ++e) {
     if (!candidate_[e]) continue;
@@ -57,10 +60,13 @@ double LengthConstraintProjection::forceMismatch(const std::vector<Eigen::Vector
     vertex_sum_[b] += (inverse_mass_[b] * multiplier_[e]) * direction_[e];
     vertex_scale_[a] = std::max(vertex_scale_[a], limit_[e]);
     vertex_scale_[b] = std::max(vertex_scale_[b], limit_[e]);
+    const double stiffness = multiplier_[e] / limit_[e];
+    sideways_stiffness_[a] += inverse_mass_[a] * stiffness;
+    sideways_stiffness_[b] += inverse_mass_[b] * stiffness;
   }
   double mismatch = 0.0;
   for (std::size_t v = 0; v < position.size(); ++v) {
-    if (inverse_mass_[v] > 0.0 && vertex_scale_[v] > 0.0) {
+    if (sideways_stiffness_[v] > 1.0 && vertex_scale_[v] > 0.0) {
       mismatch = std::max(mismatch, vertex_sum_[v].norm() / vertex_scale_[v]);
     }
   }
@@ -164,6 +170,7 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
   newton_taut_.resize(edges.size());
   vertex_sum_.resize(position.size());
   vertex_scale_.resize(position.size());
+  sideways_stiffness_.resize(position.size());
   predicted_ = position;
   ProjectionResult result;
   result.max_violation = evaluate(position, edges);

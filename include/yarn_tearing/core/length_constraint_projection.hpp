@@ -21,7 +21,8 @@ struct ProjectionResult {
   double max_violation = 0.0;  ///< max (length - limit) / limit over intact edges [-]
   /// max over free vertices of |(x'' - x~) - W J(x'')^T m| / l [-]: how far the constraint
   /// forces, taken along the final edge directions, are from explaining each vertex's
-  /// correction (l its longest incident limit). Fast projection only.
+  /// correction (l its longest incident limit), over the vertices whose sideways stiffness the
+  /// fast iterations treat unstably ((omega dt)^2 = w sum_e m_e / l_e > 1). Fast projection only.
   double force_mismatch = 0.0;
   bool converged = false;  ///< max_violation and force_mismatch <= tolerance
 };
@@ -102,6 +103,7 @@ class LengthConstraintProjection {
   static constexpr int kFastIterations = 6;  ///< fast iterations before Newton takes over
   std::vector<Eigen::Vector3d> vertex_sum_;  ///< per-vertex sum of multiplier * direction
   std::vector<double> vertex_scale_;         ///< longest incident limit per vertex [m]
+  std::vector<double> sideways_stiffness_;   ///< (omega dt)^2 of each vertex's sideways mode [-]
   double slack_tolerance_ = 0.0;  ///< relative stretch a slack edge may show before it joins
   static constexpr int kMaxPivotingPasses = 30;  ///< active-set passes per iteration
 };

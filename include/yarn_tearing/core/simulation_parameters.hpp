@@ -62,7 +62,7 @@ struct SimulationParameters {
   bool breaking_enabled = true;  ///< false: yarns never tear (yield still acts)
   /// Substeps of the step after a tear [-] (1 = none): the released elastic energy runs through
   /// the pieces as a wave at sqrt(E / rho) (~2 km/s), far faster than a step resolves.
-  int recoil_substeps = 64;
+  int recoil_substeps = 96;
   /// Use the general sparse solver even for chains (the banded O(N) path is otherwise chosen).
   bool force_general_solver = false;
 

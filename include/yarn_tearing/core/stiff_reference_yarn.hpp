@@ -17,8 +17,6 @@ class StiffReferenceYarn {
   StiffReferenceYarn(const YarnSpec& spec, const Eigen::Vector3d& gravity,
                      double stability_fraction = 0.2);
 
-  /// Moves every vertex (same count and order as the spec's) [m], e.g. to start pre-stretched.
-  void setPositions(const std::vector<Eigen::Vector3d>& positions) { position_ = positions; }
   /// Sets the velocity of a vertex [m/s] (initial conditions).
   void setVelocity(std::size_t vertex, const Eigen::Vector3d& velocity) {
     velocity_[vertex] = velocity;
