@@ -71,8 +71,10 @@ in_clean_env "${prefix}/setup.bash" 'rosmsg show yarn_tearing/BreakEvent >/dev/n
 in_clean_env "${prefix}/setup.bash" \
   "python3 -c 'import yarn_tearing.msg as m, sys; sys.exit(not m.__file__.startswith(\"${prefix}/\"))'" ||
   fail "yarn_tearing.msg is not imported from the install space"
+# grep without -q reads all of ldd's output: -q exits at the match and, under pipefail, ldd's
+# next write (SIGPIPE) failed the check now and then.
 in_clean_env "${prefix}/setup.bash" \
-  "ldd \$(catkin_find --first-only yarn_tearing yarn_tearing_node) | grep -q '${prefix}/lib/libyarn_tearing_ros.so'" ||
+  "ldd \$(catkin_find --first-only yarn_tearing yarn_tearing_node) | grep '${prefix}/lib/libyarn_tearing_ros.so' >/dev/null" ||
   fail "yarn_tearing_node does not load libyarn_tearing_ros.so from the install space"
 
 step "the demo from the install space (node, force_ramp, demo_supervisor, bag)"
