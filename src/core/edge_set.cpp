@@ -11,6 +11,7 @@ void EdgeSet::add(std::uint32_t a, std::uint32_t b, std::uint32_t yarn_index, do
   rest_length.push_back(rest);
   area.push_back(cross_section);
   strength_factor.push_back(strength);
+  breaking_strain.push_back(0.0);  // from the curve: assignBreakingStrains
   strain_limit.push_back(0.0);
   plastic_strain.push_back(0.0);
   tension.push_back(0.0);

@@ -33,8 +33,7 @@ void computeStretchLimits(const Scene& scene, const SimulationParameters& parame
     limits.soft_spring[e] = std::min(
         stabilitySpringConstant(scene.vertices, edges.vertex_a[e], edges.vertex_b[e], parameters),
         EdgeStretchLimits::kSoftSpringShare / compliance);
-    const double breaking_length =
-        original * (1.0 + curve.breakingStrain() * edges.strength_factor[e]);
+    const double breaking_length = original * (1.0 + edges.breaking_strain[e]);
     limits.max_stretch[e] = std::max(breaking_length - edges.rest_length[e], 0.0);
   }
 }

@@ -46,9 +46,8 @@ void updateMaterialResponse(const std::vector<Yarn>& yarns, double time_step, Ed
     edges.stress[e] = stress;
     // The curve at this edge's rate is the reference curve with its stresses times f.
     const double load = std::max(stress, 0.0) / edges.rate_factor[e];
-    const double breaking_strain = curve.breakingStrain() * edges.strength_factor[e];
     edges.plastic_strain[e] =
-        updatedPlasticStrain(edges.plastic_strain[e], load, breaking_strain, curve);
+        updatedPlasticStrain(edges.plastic_strain[e], load, edges.breaking_strain[e], curve);
     const double elastic = load / curve.youngsModulus();
     const double strain = edges.plastic_strain[e] + elastic;
     const double previous_strain = edges.strain[e];

@@ -31,7 +31,8 @@ void addYarn(Scene& scene, const YarnSpec& spec) {
     scene.vertices.add(spec.start + step * i, share * segment_mass + extra, share * segment,
                        yarn_index);
   }
-  const std::vector<double> strength = strengthFactors(spec.strength_scatter, yarn.num_edges);
+  const std::vector<double> strength =
+      strengthFactors(spec.strength_scatter, std::vector<double>(yarn.num_edges, segment));
   for (std::uint32_t e = 0; e < yarn.num_edges; ++e) {
     scene.edges.add(yarn.first_vertex + e, yarn.first_vertex + e + 1, yarn_index, segment,
                     spec.area(), strength[e]);
@@ -73,6 +74,7 @@ Scene buildScene(const std::vector<YarnSpec>& specs) {
     }
     addYarn(scene, spec);
   }
+  assignBreakingStrains(scene.yarns, scene.edges);
   return scene;
 }
 

@@ -8,6 +8,7 @@
 #include "yarn_tearing/core/explicit_forces.hpp"
 #include "yarn_tearing/core/material_response.hpp"
 #include "yarn_tearing/core/nonfinite_recovery.hpp"
+#include "yarn_tearing/core/strength_scatter.hpp"
 
 namespace yarn_tearing {
 namespace {
@@ -53,6 +54,7 @@ Simulator::Simulator(const SimulationParameters& parameters, Scene scene)
     : parameters_(parameters), initial_scene_(std::move(scene)) {
   parameters_.validate();
   validateScene(initial_scene_);
+  assignBreakingStrains(initial_scene_.yarns, initial_scene_.edges);
   reset();
 }
 

@@ -19,7 +19,7 @@ TearEvent tearEventOf(const Scene& scene, std::size_t edge, double time, double 
   event.position = 0.5 * (xa + xb);
   event.time = time;
 
-  const double breaking_strain = curve.breakingStrain() * edges.strength_factor[edge];
+  const double breaking_strain = edges.breaking_strain[edge];
   const double length_strain = (xb - xa).norm() / edges.original_rest_length[edge] - 1.0;
   event.strain = std::min(length_strain, breaking_strain);
   event.plastic_strain = edges.plastic_strain[edge];

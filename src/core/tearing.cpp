@@ -9,8 +9,7 @@ namespace {
 
 double overstrain(const Scene& scene, std::size_t e) {
   const EdgeSet& edges = scene.edges;
-  const double breaking = scene.yarns[edges.yarn[e]].material.curve.breakingStrain();
-  return edges.strain[e] / (breaking * edges.strength_factor[e]);
+  return edges.strain[e] / edges.breaking_strain[e];
 }
 
 }  // namespace

@@ -55,6 +55,9 @@ void YarnSpec::validate() const {
   require(cv == 0.0 || strength_scatter.weibull_modulus == 0.0, name,
           "give the strength scatter as a Weibull modulus or as a coefficient of variation, not "
           "both");
+  const double gauge = strength_scatter.gauge_length;
+  require(std::isfinite(gauge) && gauge > 0.0, name,
+          "gauge_length must be > 0 [m], got " + std::to_string(gauge));
 }
 
 double YarnSpec::area() const {

@@ -39,11 +39,11 @@ std::string yamlQuoted(const std::string& text) {
 }
 
 double weakestBreakingForce(const Scene& scene, const Yarn& yarn) {
-  const StressStrainCurve& curve = yarn.material.curve;
+  const double breaking_stress = yarn.material.curve.breakingStress();
   double weakest = std::numeric_limits<double>::infinity();
   for (std::uint32_t e = yarn.first_edge; e < yarn.first_edge + yarn.num_edges; ++e) {
-    const double strain = curve.breakingStrain() * scene.edges.strength_factor.at(e);
-    weakest = std::min(weakest, curve.stressAtStrain(strain) * scene.edges.area.at(e));
+    weakest = std::min(
+        weakest, breaking_stress * scene.edges.strength_factor.at(e) * scene.edges.area.at(e));
   }
   return weakest;
 }

@@ -76,7 +76,7 @@ YarnSpec loadYarnSpec(const ParamValue& yarn, const ParamValue& presets) {
   }
   yarn.requireKeysIn({"name", "material", "radius", "tex", "packing_fraction", "length",
                       "num_vertices", "start", "direction", "pinned", "end_mass", "weibull_modulus",
-                      "strength_cv", "seed"});
+                      "strength_cv", "gauge_length", "seed"});
   YarnSpec spec;
   spec.name = yarn.member("name").string(false);
   spec.material = loadMaterial(yarn.member("material"), presets);
@@ -102,6 +102,10 @@ YarnSpec loadYarnSpec(const ParamValue& yarn, const ParamValue& presets) {
       cv.fail("either strength_cv or weibull_modulus, not both (remove one)");
     }
     spec.strength_scatter.coefficient_of_variation = cv.number(0.0, 1.0, "");
+  }
+  if (yarn.has("gauge_length")) {
+    spec.strength_scatter.gauge_length =
+        yarn.member("gauge_length").number(bounds::kMinSegment, bounds::kMaxLength, "m");
   }
   if (yarn.has("seed")) {
     spec.strength_scatter.seed = static_cast<unsigned long long>(

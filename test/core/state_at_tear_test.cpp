@@ -8,14 +8,14 @@
 namespace yarn_tearing::test {
 namespace {
 
-/// Checks an event against the rule: strain <= eps_b f, stress <= curve(strain) <= sigma_b,
+/// Checks an event against the rule: strain <= the edge's breaking strain, stress <= curve(strain) <= sigma_b,
 /// tension = stress * area, all finite.
 void expectStateAtTear(const Simulator& sim, const TearEvent& event) {
   const Scene& scene = sim.scene();
   const Yarn& yarn = scene.yarns[event.yarn];
   const std::size_t e = yarn.first_edge + event.edge;
   const StressStrainCurve& curve = yarn.material.curve;
-  const double breaking_strain = curve.breakingStrain() * scene.edges.strength_factor[e];
+  const double breaking_strain = scene.edges.breaking_strain[e];
   EXPECT_LE(event.strain, breaking_strain);
   EXPECT_GE(event.stress, 0.0);
   EXPECT_LE(event.stress, curve.stressAtStrain(event.strain) * (1.0 + 1.0e-12));

@@ -23,7 +23,9 @@ TEST(StrengthScatter, SampledFactorsHaveMeanOneAndTheRequestedCoefficientOfVaria
   StrengthScatter scatter;
   scatter.coefficient_of_variation = 0.1;
   scatter.seed = 3;
-  const std::vector<double> factors = strengthFactors(scatter, 200000);
+  // Edges of the gauge length: each one is a specimen.
+  const std::vector<double> factors =
+      strengthFactors(scatter, std::vector<double>(200000, scatter.gauge_length));
   double sum = 0.0;
   double sum2 = 0.0;
   for (double f : factors) {

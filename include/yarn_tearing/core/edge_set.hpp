@@ -13,7 +13,11 @@ struct EdgeSet {
   std::vector<double> original_rest_length;  ///< L0 [m]
   std::vector<double> rest_length;           ///< plastic rest length L0 (1 + eps_p) [m]
   std::vector<double> area;                  ///< load-bearing cross-section [m^2]
-  std::vector<double> strength_factor;       ///< breaking strain multiplier [-] (scatter)
+  /// Strength factor f [-]: the edge tears at the stress f * sigma_b (scatter; 1 = none).
+  std::vector<double> strength_factor;
+  /// Strain at which the edge tears [-]: its curve's strain at f * sigma_b, relative to L0. Set by
+  /// assignBreakingStrains (buildScene and the Simulator's constructors call it).
+  std::vector<double> breaking_strain;
   std::vector<double> strain_limit;    ///< elastic strain / (1 + eps_p): the edge is held to |x_a -
                                        ///< x_b| <= rest_length (1 + s) [-]
   std::vector<double> plastic_strain;  ///< eps_p, relative to L0 [-]

@@ -12,8 +12,8 @@ namespace yarn_tearing {
 /// The tension estimate of a step that tears can be far past what the edge carries (a grasp that
 /// jumps, a force 1000 times the strength: the length stop is 10^6 times stiffer than the yarn),
 /// so the event does not copy it. The rule:
-/// - strain ε = min(|x_b − x_a| / L0 − 1, ε_b·f): the edge's own length, at most its breaking
-///   strain (ε_b of the curve times the edge's strength factor f);
+/// - strain ε = min(|x_b − x_a| / L0 − 1, ε_b,e): the edge's own length, at most its breaking
+///   strain (EdgeSet::breaking_strain: the curve's strain at its strength f·σ_b);
 /// - stress σ = min(T_est / A, σ_c(ε)) and tension T = σ·A, where σ_c(ε) = max(0, min(E·(ε − ε_p),
 ///   curve(ε))) is what that strain carries: elastically from the plastic strain ε_p, at most the
 ///   loading curve; so σ ≤ the curve at the breaking strain (both times the edge's rate factor,

@@ -20,8 +20,7 @@ namespace ros_layer {
 std::string describeMaterialsYaml(const Scene& scene);
 
 /// Tension [N] at which `yarn`'s weakest edge tears: the minimum over its edges e of
-/// stressAtStrain(breakingStrain * strength_factor_e) * area_e. Equals sigma_b * area without
-/// strength scatter, is lower with it.
+/// sigma_b * strength_factor_e * area_e. Equals sigma_b * area without strength scatter.
 double weakestBreakingForce(const Scene& scene, const Yarn& yarn);
 
 /// `x` as a YAML float, e.g. 3.0e+08, 0.01, 0.0 (PyYAML needs a '.' before an exponent).

@@ -9,8 +9,8 @@ namespace ros_layer {
 /// Reads one entry of ~yarns:
 /// {name, material, radius [m] | tex [g/km] (+ packing_fraction [-]), length [m], num_vertices,
 ///  start [m], direction, pinned (vertex indices, negative from the end), end_mass [kg],
-///  weibull_modulus [-] or strength_cv [-], seed}. Throws ParameterError naming the key, value and
-///  what is allowed.
+///  weibull_modulus [-] or strength_cv [-], gauge_length [m], seed}. Throws ParameterError naming
+///  the key, value and what is allowed.
 YarnSpec loadYarnSpec(const ParamValue& yarn, const ParamValue& presets);
 
 }  // namespace ros_layer

@@ -80,6 +80,16 @@ TEST(YarnSpecLoader, LoadsStrengthScatterAsACoefficientOfVariation) {
       << loadError(yarn);
 }
 
+TEST(YarnSpecLoader, LoadsTheGaugeLengthOfTheStrengthStatistics) {
+  XmlRpc::XmlRpcValue yarn = validYarn();
+  EXPECT_DOUBLE_EQ(loadYarnSpec(yarnParam(yarn), kNoPresets).strength_scatter.gauge_length, 0.5);
+  yarn["gauge_length"] = 0.25;
+  EXPECT_DOUBLE_EQ(loadYarnSpec(yarnParam(yarn), kNoPresets).strength_scatter.gauge_length, 0.25);
+  yarn["gauge_length"] = 0.0;
+  EXPECT_NE(loadError(yarn).find("/node/yarns[0].gauge_length"), std::string::npos)
+      << loadError(yarn);
+}
+
 TEST(YarnSpecLoader, AcceptsIntegersForNumbers) {
   XmlRpc::XmlRpcValue yarn = validYarn();
   yarn["length"] = 1;
