@@ -37,8 +37,8 @@ struct TensilePullResult {
 /// Pulls one specimen `spec` (its length is the clamped length) in a virtual CRE tester: vertex 0
 /// is the fixed clamp on the load cell, the last vertex the moving clamp, drawn away along the
 /// yarn's direction at extension_rate * length. No gravity (the weight of a 0.5 m yarn is about
-/// 1e-5 of its strength) and no pins other than the clamps. Throws std::invalid_argument on an
-/// invalid spec or settings.
+/// 1e-5 of its strength), no pins other than the clamps and no end mass. Throws
+/// std::invalid_argument on an invalid spec or settings.
 TensilePullResult pullSpecimen(YarnSpec spec, const TensilePullSettings& settings);
 
 }  // namespace yarn_tearing
