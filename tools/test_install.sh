@@ -5,8 +5,8 @@
 #   2. with nothing but `source <prefix>/setup.bash` in an empty environment: rospack finds the
 #      installed share folder, the messages and headers are there, the demo (node, force_ramp,
 #      demo_supervisor, launch files, configs) runs to both tears and records a bag, plot_bag
-#      (with its yarn_plotting module) draws it, and the nodelet (yarn_tearing_nodelet.launch)
-#      publishes yarn_states;
+#      (with its yarn_plotting module) draws it, the nodelet (yarn_tearing_nodelet.launch)
+#      publishes yarn_states, and tensile_test runs a cotton preset;
 #   3. builds the downstream package test/downstream/yarn_tearing_downstream, which links
 #      yarn_tearing_core through find_package(catkin COMPONENTS yarn_tearing) and runs a hanging
 #      yarn, once against the install space and once against the devel space ws/devel.
@@ -55,6 +55,7 @@ step "files of the install space"
 for file in lib/libyarn_tearing_core.so lib/libyarn_tearing_ros.so \
   lib/yarn_tearing/yarn_tearing_node lib/yarn_tearing/plot_bag \
   lib/yarn_tearing/yarn_plotting/__init__.py lib/yarn_tearing/force_ramp \
+  lib/yarn_tearing/tensile_test lib/yarn_tearing/tensile_pull \
   include/yarn_tearing/core/simulator.hpp include/yarn_tearing/BreakEvent.h \
   share/yarn_tearing/package.xml share/yarn_tearing/launch/demo.launch \
   share/yarn_tearing/config/default.yaml share/yarn_tearing/config/rviz/demo.rviz \
@@ -102,6 +103,13 @@ in_clean_env "${prefix}/setup.bash" "
   for i in \$(seq 100); do rostopic list >/dev/null 2>&1 && break; sleep 0.2; done
   timeout 30 rostopic echo -n 1 /yarn_states/sim_time" >"${work}/nodelet_echo.log" 2>&1 ||
   { cat "${work}/nodelet_echo.log" "${work}/nodelet.log"; fail "no yarn_states from the nodelet"; }
+
+step "tensile_test (with tensile_pull and the material presets) from the install space"
+in_clean_env "${prefix}/setup.bash" \
+  "cd ${work} && rosrun yarn_tearing tensile_test cotton --specimens 2 --vertices 5 --plot ${work}/tensile.png" \
+  >"${work}/tensile.log" 2>&1 || { cat "${work}/tensile.log"; fail "tensile_test"; }
+grep -q "breaking force \[N\]" "${work}/tensile.log" || fail "tensile_test printed no report"
+[[ -s "${work}/tensile.png" ]] || fail "tensile_test wrote no plot"
 
 build_downstream() {
   local name="$1" setup="$2"
