@@ -8,8 +8,8 @@
 namespace yarn_tearing::test {
 namespace {
 
-/// Checks an event against the rule: strain <= the edge's breaking strain, stress <= curve(strain) <= sigma_b,
-/// tension = stress * area, all finite.
+/// Checks an event against the rule: strain <= the edge's breaking strain, stress <= curve(strain)
+/// <= sigma_b, tension = stress * area, all finite.
 void expectStateAtTear(const Simulator& sim, const TearEvent& event) {
   const Scene& scene = sim.scene();
   const Yarn& yarn = scene.yarns[event.yarn];
