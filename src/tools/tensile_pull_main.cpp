@@ -20,7 +20,7 @@ constexpr const char* kUsage = R"(usage: tensile_pull --curve S0,P0;S1,P1;... --
   --curve             stress-strain points "strain,stress [Pa];..." from (0,0); 2nd = yield,
                       last = break (sigma_b, the mean strength at the gauge length)
   --density           fibre density [kg/m^3]
-  --plastic-viscosity eta [Pa*s] (default 0: rate-independent)
+  --rate-sensitivity  k [per decade of strain rate] (default 0: rate-independent)
   --radius | --tex    yarn radius [m] | linear density [g/km]; --packing-fraction with --tex
   --gauge-length      length at which sigma_b and the scatter hold [m] (default 0.5)
   --length            clamped specimen length [m] (default: the gauge length)
@@ -66,7 +66,7 @@ std::vector<yarn_tearing::CurvePoint> curvePoints(const std::string& text) {
 }
 
 std::map<std::string, std::string> parseOptions(int argc, char** argv) {
-  static const char* const kKeys[] = {"curve",           "density",   "plastic-viscosity",
+  static const char* const kKeys[] = {"curve",           "density",   "rate-sensitivity",
                                       "radius",          "tex",       "packing-fraction",
                                       "gauge-length",    "length",    "strength-cv",
                                       "weibull-modulus", "specimens", "seed",
@@ -101,7 +101,7 @@ yarn_tearing::YarnSpec specimen(const std::map<std::string, std::string>& option
   spec.name = "specimen";
   spec.material.name = "tensile_pull";
   spec.material.density = value("density", 0.0);
-  spec.material.plastic_viscosity = value("plastic-viscosity", 0.0);
+  spec.material.rate_sensitivity = value("rate-sensitivity", 0.0);
   spec.material.curve = yarn_tearing::StressStrainCurve(curvePoints(options.at("curve")));
   spec.tex = value("tex", 0.0);
   spec.radius = spec.tex > 0.0 ? 0.0 : value("radius", 1.0e-4);
