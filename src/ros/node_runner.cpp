@@ -5,6 +5,7 @@
 #include <exception>
 #include <memory>
 
+#include "yarn_tearing/ros/exit_on_interrupt.hpp"
 #include "yarn_tearing/ros/simulation_config.hpp"
 #include "yarn_tearing/ros/yarn_tearing_node.hpp"
 
@@ -20,6 +21,7 @@ int runYarnTearingNode(int argc, char** argv) {
   ros::NodeHandle private_nh("~");
   std::unique_ptr<YarnTearingNode> node;
   try {
+    const ExitOnInterrupt exit_while_starting;  // the scene builds without checking ros::ok()
     node = std::make_unique<YarnTearingNode>(nh, private_nh, loadSimulationConfig(private_nh));
   } catch (const std::exception& e) {
     ROS_FATAL("yarn_tearing_node: invalid configuration: %s", e.what());

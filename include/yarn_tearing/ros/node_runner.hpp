@@ -13,6 +13,8 @@ enum NodeExitStatus : int {
 /// The whole yarn_tearing_node program: ros::init as "yarn_tearing_node", a YarnTearingNode built
 /// from the private parameters, run until ROS shuts down. Failures are reported with ROS_FATAL
 /// (given 0.5 s to reach /rosout) and returned as a NodeExitStatus, the process's exit status.
+/// SIGINT or SIGTERM while the configuration is validated and the scene built ends the process
+/// at once with 130 or 143 (ExitOnInterrupt); afterwards, at the end of the current step.
 int runYarnTearingNode(int argc, char** argv);
 
 }  // namespace ros_layer
