@@ -3,9 +3,7 @@
 #include <algorithm>
 
 namespace yarn_tearing {
-namespace {
 
-/// Soft-spring constant before the cap [N/m]: ratio * (lighter free vertex mass) / dt^2.
 double stabilitySpringConstant(const VertexSet& vertices, std::uint32_t a, std::uint32_t b,
                                const SimulationParameters& p) {
   double lighter = 0.0;
@@ -15,8 +13,6 @@ double stabilitySpringConstant(const VertexSet& vertices, std::uint32_t a, std::
   }
   return p.soft_spring_ratio * lighter / (p.time_step * p.time_step);
 }
-
-}  // namespace
 
 void computeStretchLimits(const Scene& scene, const SimulationParameters& parameters,
                           EdgeStretchLimits& limits) {

@@ -35,6 +35,13 @@ std::vector<std::uint32_t> nonFiniteYarns(const Scene& scene,
   }
   std::vector<std::uint32_t> yarns;
   if (!any) return yarns;
+  // A fabric is restored whole: both of its groups (its vertices belong to the warp group).
+  for (const Fabric& fabric : scene.fabrics) {
+    if (bad[fabric.warp_group] || bad[fabric.weft_group]) {
+      bad[fabric.warp_group] = 1;
+      bad[fabric.weft_group] = 1;
+    }
+  }
   for (std::size_t y = 0; y < bad.size(); ++y) {
     if (bad[y]) yarns.push_back(static_cast<std::uint32_t>(y));
   }

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "yarn_tearing/core/fabric_builder.hpp"
 #include "yarn_tearing/core/strength_scatter.hpp"
 
 namespace yarn_tearing {
@@ -64,15 +65,71 @@ std::uint32_t Scene::globalVertex(std::size_t yarn, int local) const {
   return yarns[yarn].first_vertex + static_cast<std::uint32_t>(index);
 }
 
-Scene buildScene(const std::vector<YarnSpec>& specs) {
+int Scene::findFabric(const std::string& name) const {
+  for (std::size_t i = 0; i < fabrics.size(); ++i) {
+    if (fabrics[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+std::uint32_t Scene::fabricVertex(std::size_t fabric, int row, int column) const {
+  if (fabric >= fabrics.size()) throw std::out_of_range("no fabric " + std::to_string(fabric));
+  const Fabric& f = fabrics[fabric];
+  const auto rows = static_cast<int>(f.picks);
+  const auto columns = static_cast<int>(f.ends);
+  const int r = row < 0 ? rows + row : row;
+  const int c = column < 0 ? columns + column : column;
+  if (r < 0 || r >= rows || c < 0 || c >= columns) {
+    throw std::out_of_range("vertex (" + std::to_string(row) + ", " + std::to_string(column) +
+                            ") of fabric '" + f.name + "' out of range: row in [" +
+                            std::to_string(-rows) + ", " + std::to_string(rows - 1) +
+                            "], column in [" + std::to_string(-columns) + ", " +
+                            std::to_string(columns - 1) + "]");
+  }
+  return f.vertex(static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(c));
+}
+
+std::uint32_t Scene::fabricEdge(std::size_t fabric, const FabricSegment& segment) const {
+  if (fabric >= fabrics.size()) throw std::out_of_range("no fabric " + std::to_string(fabric));
+  const Fabric& f = fabrics[fabric];
+  const std::uint32_t per_yarn = f.segmentsPerYarn(segment.family);
+  const Yarn& group = yarns[f.group(segment.family)];
+  if (segment.segment >= per_yarn || segment.yarn >= group.num_edges / per_yarn) {
+    throw std::out_of_range(
+        std::string(familyName(segment.family)) + " segment " + std::to_string(segment.segment) +
+        " of yarn " + std::to_string(segment.yarn) + " of fabric '" + f.name + "' does not exist");
+  }
+  return group.first_edge + segment.yarn * per_yarn + segment.segment;
+}
+
+FabricSegment Scene::fabricSegmentOf(std::size_t edge) const {
+  const Yarn& group = yarns[edges.yarn[edge]];
+  const Fabric& f = fabrics.at(static_cast<std::size_t>(group.fabric));
+  return f.segmentOf(group.family, static_cast<std::uint32_t>(edge) - group.first_edge);
+}
+
+Scene buildScene(const std::vector<YarnSpec>& specs, const std::vector<FabricSpec>& fabrics) {
   Scene scene;
   std::set<std::string> names;
+  const auto claim = [&names](const std::string& name, const char* what) {
+    if (!names.insert(name).second) {
+      throw std::invalid_argument(std::string(what) +
+                                  " names must be unique among yarns and "
+                                  "fabrics (and their '<fabric>/warp', '<fabric>/weft'): '" +
+                                  name + "' repeats");
+    }
+  };
   for (const YarnSpec& spec : specs) {
     spec.validate();
-    if (!names.insert(spec.name).second) {
-      throw std::invalid_argument("yarn names must be unique: '" + spec.name + "' repeats");
-    }
+    claim(spec.name, "yarn");
     addYarn(scene, spec);
+  }
+  for (const FabricSpec& spec : fabrics) {
+    spec.validate();
+    claim(spec.name, "fabric");
+    claim(spec.name + "/warp", "fabric");
+    claim(spec.name + "/weft", "fabric");
+    addFabric(scene, spec);
   }
   assignBreakingStrains(scene.yarns, scene.edges);
   return scene;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "yarn_tearing/core/explicit_forces.hpp"
+#include "yarn_tearing/core/fabric_shear.hpp"
 #include "yarn_tearing/core/material_response.hpp"
 #include "yarn_tearing/core/nonfinite_recovery.hpp"
 #include "yarn_tearing/core/strength_scatter.hpp"
@@ -44,8 +45,9 @@ void validateScene(const Scene& scene) {
 
 }  // namespace
 
-Simulator::Simulator(const SimulationParameters& parameters, const std::vector<YarnSpec>& yarns)
-    : parameters_(parameters), initial_scene_(buildScene(yarns)) {
+Simulator::Simulator(const SimulationParameters& parameters, const std::vector<YarnSpec>& yarns,
+                     const std::vector<FabricSpec>& fabrics)
+    : parameters_(parameters), initial_scene_(buildScene(yarns, fabrics)) {
   parameters_.validate();
   reset();
 }
@@ -163,6 +165,7 @@ void Simulator::accumulateForces() {
   computeStretchLimits(scene_, parameters_, work_.stretch_limits);
   accumulateExplicitForces(parameters_, scene_.vertices, work_.stretch_limits.soft_spring,
                            scene_.edges, work_.force);
+  accumulateShearForces(scene_, parameters_, work_.force);
 }
 
 void Simulator::predictPositions() {

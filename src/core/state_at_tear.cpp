@@ -16,6 +16,8 @@ TearEvent tearEventOf(const Scene& scene, std::size_t edge, double time, double 
   event.edge = static_cast<std::uint32_t>(edge) - yarn.first_edge;
   event.vertex_a = edges.vertex_a[edge] - yarn.first_vertex;
   event.vertex_b = edges.vertex_b[edge] - yarn.first_vertex;
+  event.fabric = yarn.fabric;
+  if (yarn.fabric >= 0) event.segment = scene.fabricSegmentOf(edge);
   event.position = 0.5 * (xa + xb);
   event.time = time;
 

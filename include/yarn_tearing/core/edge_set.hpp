@@ -9,7 +9,7 @@ namespace yarn_tearing {
 struct EdgeSet {
   std::vector<std::uint32_t> vertex_a;       ///< first vertex (global id)
   std::vector<std::uint32_t> vertex_b;       ///< second vertex (global id)
-  std::vector<std::uint32_t> yarn;           ///< index of the owning yarn
+  std::vector<std::uint32_t> yarn;           ///< index of the owning yarn (or fabric family group)
   std::vector<double> original_rest_length;  ///< L0 [m]
   std::vector<double> rest_length;           ///< plastic rest length L0 (1 + eps_p) [m]
   std::vector<double> area;                  ///< load-bearing cross-section [m^2]

@@ -36,6 +36,11 @@ struct EdgeStretchLimits {
   }
 };
 
+/// The stiffest explicit spring between vertices `a` and `b` that stays stable [N/m]:
+/// soft_spring_ratio * (the lighter free vertex's mass) / dt^2; 0 when both are held.
+double stabilitySpringConstant(const VertexSet& vertices, std::uint32_t a, std::uint32_t b,
+                               const SimulationParameters& p);
+
 /// Fills `limits` from the edges' rest lengths, areas and materials, the vertex masses and the
 /// time step.
 void computeStretchLimits(const Scene& scene, const SimulationParameters& parameters,

@@ -10,7 +10,8 @@ namespace yarn_tearing {
 
 /// Yarns (indices into scene.yarns, ascending) with a non-finite value in any vertex's position
 /// or velocity, any edge's rest length, strain limit, tension, stress, strain, plastic strain or
-/// strain rate, or any of their vertices' `support_force` [N] (one per vertex).
+/// strain rate, or any of their vertices' `support_force` [N] (one per vertex). A fabric is
+/// listed whole: both its warp and its weft group.
 std::vector<std::uint32_t> nonFiniteYarns(const Scene& scene,
                                           const std::vector<Eigen::Vector3d>& support_force);
 

@@ -15,8 +15,10 @@ namespace yarn_tearing {
 /// inputs give bitwise the same outputs. Not thread-safe; one thread drives it.
 class Simulator {
  public:
-  /// Throws std::invalid_argument (naming the parameter) on invalid parameters or yarn specs.
-  Simulator(const SimulationParameters& parameters, const std::vector<YarnSpec>& yarns);
+  /// Throws std::invalid_argument (naming the parameter) on invalid parameters, yarn or fabric
+  /// specs. Yarns come first in the scene, then fabrics (buildScene()).
+  Simulator(const SimulationParameters& parameters, const std::vector<YarnSpec>& yarns,
+            const std::vector<FabricSpec>& fabrics = {});
   /// Simulates a ready-made scene: any edge graph (a woven patch, a knot), not only straight
   /// yarns. Throws std::invalid_argument when an edge names a missing vertex or yarn, or a mass,
   /// length or area is not positive.
@@ -53,7 +55,8 @@ class Simulator {
   /// Break events since the last call, in the order they happened; each is returned once.
   std::vector<TearEvent> takeTearEvents();
 
-  /// Force the yarn exerts on the holder of a pinned or kinematic vertex [N] (zero if free).
+  /// Force the yarn (or fabric) exerts on the holder of a pinned or kinematic vertex [N] (zero if
+  /// free).
   Eigen::Vector3d supportForce(std::uint32_t vertex) const { return support_force_[vertex]; }
 
   const Scene& scene() const { return scene_; }

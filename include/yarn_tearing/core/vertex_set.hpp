@@ -22,7 +22,8 @@ struct VertexSet {
   std::vector<VertexMotion> motion;               ///< free, pinned or kinematic
   std::vector<Eigen::Vector3d> applied_force;     ///< external force set from outside [N]
   std::vector<Eigen::Vector3d> kinematic_target;  ///< target of kinematic vertices [m]
-  std::vector<std::uint32_t> yarn;                ///< index of the owning yarn
+  /// Index of the owning yarn (a fabric's vertices: its warp group, Fabric::warp_group).
+  std::vector<std::uint32_t> yarn;
 
   std::size_t size() const { return position.size(); }
   bool isSupport(std::size_t v) const { return motion[v] != VertexMotion::kFree; }

@@ -1,0 +1,28 @@
+#pragma once
+
+#include "test_support.hpp"
+#include "yarn_tearing/core/fabric_spec.hpp"
+
+namespace yarn_tearing::test {
+
+/// A cotton-like plain-weave patch hanging along -z from its first row (at the origin), the weft
+/// along +x: `ends` x `picks` vertices, 0.1 mm yarns, no crimp, no scatter.
+inline FabricSpec cottonPatch(int ends, int picks, double weft_length, double warp_length) {
+  FabricSpec spec;
+  spec.name = "cloth";
+  spec.ends = ends;
+  spec.picks = picks;
+  spec.weft_length = weft_length;
+  spec.warp_length = warp_length;
+  spec.warp = hangingYarn();
+  spec.weft = hangingYarn();
+  spec.pinned_sides = {FabricSide::kFirstRow};
+  return spec;
+}
+
+/// The breaking force sigma_b pi r^2 of a fabric family's yarn [N].
+inline double breakingForce(const YarnSpec& yarn) {
+  return yarn.material.curve.breakingStress() * yarn.area();
+}
+
+}  // namespace yarn_tearing::test
