@@ -97,9 +97,9 @@ void EdgeGramSolver::solveGeneral(const EdgeSet& edges, const GramSystem& system
   }
   matrix_.resize(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q));
   matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
-  factorization_.ldlt.compute(matrix_);
+  factorization_.factorize(matrix_);
   Eigen::Map<Eigen::VectorXd> b(rhs.data(), static_cast<Eigen::Index>(q));
-  const Eigen::VectorXd x = factorization_.ldlt.solve(b);
+  const Eigen::VectorXd x = factorization_.solve(b);
   b = x;
 }
 

@@ -84,10 +84,9 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     solution_ = banded_factorization_.ldlt.solve(rhs_);
     return banded_factorization_.ldlt.info() == Eigen::Success && solution_.allFinite();
   }
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(matrix_);
-  if (ldlt.info() != Eigen::Success) return false;
-  solution_ = ldlt.solve(rhs_);
-  return ldlt.info() == Eigen::Success && solution_.allFinite();
+  if (!general_factorization_.factorize(matrix_)) return false;
+  solution_ = general_factorization_.solve(rhs_);
+  return solution_.allFinite();
 }
 
 double StiffNewtonStep::linearizedStretch(const EdgeSet& edges,

@@ -8,6 +8,7 @@
 
 #include "yarn_tearing/core/edge_incidence.hpp"
 #include "yarn_tearing/core/edge_set.hpp"
+#include "yarn_tearing/core/pattern_cached_ldlt.hpp"
 
 namespace yarn_tearing {
 
@@ -56,15 +57,8 @@ class EdgeGramSolver {
   std::vector<double> sweep_;           ///< banded: Thomas elimination factors
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> matrix_;
-  /// The sparse factorization is recomputed by every solve, so copies start without one (Eigen's
-  /// solvers cannot be copied); this keeps EdgeGramSolver, and so Simulator, copyable.
-  struct Factorization {
-    Factorization() = default;
-    Factorization(const Factorization&) {}
-    Factorization& operator=(const Factorization&) { return *this; }
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
-  };
-  Factorization factorization_;
+  /// The general path's factorization, its symbolic analysis kept while the pattern holds.
+  PatternCachedLdlt factorization_;
 };
 
 }  // namespace yarn_tearing

@@ -9,6 +9,7 @@
 #include "yarn_tearing/core/edge_incidence.hpp"
 #include "yarn_tearing/core/edge_set.hpp"
 #include "yarn_tearing/core/edge_stretch_state.hpp"
+#include "yarn_tearing/core/pattern_cached_ldlt.hpp"
 #include "yarn_tearing/core/taut_frontier.hpp"
 
 namespace yarn_tearing {
@@ -61,6 +62,8 @@ class StiffNewtonStep {
         ldlt;
   };
   BandedFactorization banded_factorization_;
+  /// Factorization for other graphs, its symbolic analysis kept while the pattern holds.
+  PatternCachedLdlt general_factorization_;
   std::vector<int> vertex_row_;  ///< first row of each free vertex, -1 for supports
   std::vector<int> edge_row_;    ///< row of each taut edge, -1 otherwise
   std::vector<Eigen::Triplet<double>> triplets_;

@@ -1,0 +1,87 @@
+// Steps of a woven fabric (issue 12): hanging at rest, and while a trouser tear runs.
+// Run: build/core/yarn_tearing_bench --benchmark_filter=Fabric --benchmark_repetitions=5
+//        --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include "yarn_tearing/core/simulator.hpp"
+
+namespace yarn_tearing {
+namespace {
+
+/// A cotton plain weave of side x side vertices (0.1 mm yarns, `spacing` [m] between yarns, no
+/// crimp), hanging along -z from its pinned first row.
+FabricSpec benchFabric(int side, double spacing) {
+  FabricSpec spec;
+  spec.name = "bench";
+  spec.ends = side;
+  spec.picks = side;
+  spec.warp_length = spacing * (side - 1);
+  spec.weft_length = spacing * (side - 1);
+  spec.warp.material.curve = StressStrainCurve({{0.0, 0.0}, {0.015, 1.14e8}, {0.071, 4.86e8}});
+  spec.weft = spec.warp;
+  spec.pinned_sides = {FabricSide::kFirstRow};
+  return spec;
+}
+
+/// Hanging from its first row, 12.5 mm between yarns, air damping 0.05 N s/m^2, after 0.2 s.
+void BM_FabricAtRest(benchmark::State& state) {
+  SimulationParameters parameters;
+  parameters.air_damping = 0.05;
+  Simulator sim(parameters, {}, {benchFabric(static_cast<int>(state.range(0)), 0.0125)});
+  while (sim.time() < 0.2) sim.step();
+  for (auto _ : state) {
+    sim.step();
+    benchmark::ClobberMemory();
+  }
+  state.counters["iterations/step"] = sim.lastHealth().projection_iterations;
+}
+
+/// A trouser tear: 2 mm between yarns, held along its first row, a slit a quarter of the picks
+/// long up its middle, the two halves of the last row drawn apart along the weft at 0.1 m/s each.
+/// Run until the first tear, then each iteration steps that state kWindow times (copying it is
+/// not timed); `per_step` is the mean step [s] over the window, recoil substeps included, and
+/// `tears` the tears in it.
+void BM_FabricTearing(benchmark::State& state) {
+  constexpr int kWindow = 50;
+  const int side = static_cast<int>(state.range(0));
+  FabricSpec spec = benchFabric(side, 0.002);
+  const int middle = side / 2 - 1;
+  spec.slits = {{FabricFamily::kWeft, side - side / 4, side - 1, middle}};
+  SimulationParameters parameters;
+  Simulator start(parameters, {}, {spec});
+  const Scene& scene = start.scene();
+  std::vector<Eigen::Vector3d> origin;
+  for (int c = 0; c < side; ++c)
+    origin.push_back(scene.vertices.position[scene.fabricVertex(0, -1, c)]);
+  const auto drive = [&](Simulator& sim) {
+    const double travel = 0.1 * (sim.time() + parameters.time_step);
+    for (int c = 0; c < side; ++c) {
+      const double sign = c <= middle ? -1.0 : 1.0;
+      sim.setKinematicTarget(sim.scene().fabricVertex(0, -1, c),
+                             origin[c] + Eigen::Vector3d(sign * travel, 0.0, 0.0));
+    }
+    sim.step();
+  };
+  while (!start.recoilPending() && start.time() < 2.0) drive(start);
+  Simulator sim = start;
+  std::size_t tears = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    sim = start;
+    state.ResumeTiming();
+    for (int i = 0; i < kWindow; ++i) drive(sim);
+    state.PauseTiming();
+    tears = sim.takeTearEvents().size();
+    state.ResumeTiming();
+  }
+  state.counters["per_step"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * kWindow,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["tears"] = static_cast<double>(tears);
+}
+
+BENCHMARK(BM_FabricAtRest)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_FabricTearing)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace yarn_tearing
