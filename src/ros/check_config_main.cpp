@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
   ros::NodeHandle private_nh("~");
   try {
     const ros_layer::SimulationConfig config = ros_layer::loadSimulationConfig(private_nh);
-    Simulator simulator(config.parameters, config.yarns);
+    Simulator simulator(config.parameters, config.yarns, config.fabrics);
     const ros::WallTime start = ros::WallTime::now();
     const double steps = kCheckedTime / config.parameters.time_step;
     for (double k = 0.0; k < steps && ros::ok(); k += 1.0) {

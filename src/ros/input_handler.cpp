@@ -61,9 +61,7 @@ void InputHandler::handleGrasp(const Grasp& msg, Simulator& simulator) {
   }
   GraspTarget target;
   target.frame = msg.target_frame;
-  target.label = "vertex " + std::to_string(msg.vertex) + " of yarn '" +
-                 clipped(simulator.scene().yarns[simulator.scene().vertices.yarn[vertex]].name) +
-                 "'";
+  target.label = "vertex " + std::to_string(msg.vertex) + " of '" + clipped(msg.yarn) + "'";
   target.to = frames_.originInFixedFrame(msg.target_frame);
   const auto existing = grasps_.find(vertex);
   const Eigen::Vector3d& position = simulator.scene().vertices.position[vertex];

@@ -13,6 +13,7 @@ constexpr int kSegmentsId = 0;
 constexpr int kVerticesId = 1;
 constexpr int kBreaksId = 2;
 constexpr int kLabelId = 3;
+constexpr int kMeshId = 0;             ///< in the fabric's own namespace
 constexpr double kLabelHeight = 0.01;  ///< [m] height of the yarn-name text
 constexpr double kVertexScale = 1.5;   ///< vertex sphere diameter / segment width
 constexpr double kBreakScale = 4.0;    ///< break cube edge / segment width
@@ -24,6 +25,10 @@ std_msgs::ColorRGBA rgba(double r, double g, double b) {
   color.b = static_cast<float>(b);
   color.a = 1.0F;
   return color;
+}
+
+bool isFabricWeft(const Yarn& yarn) {
+  return yarn.fabric >= 0 && yarn.family == FabricFamily::kWeft;
 }
 
 }  // namespace
@@ -73,11 +78,13 @@ visualization_msgs::MarkerArray MarkerBuilder::build(const Scene& scene, const r
     const Yarn& yarn = scene.yarns[y];
     const double width = std::max(2.0 * yarn.radius, min_width_);
     array.markers.push_back(segments(scene, yarn, width, stamp));
-    array.markers.push_back(vertices(scene, yarn, width, stamp));
+    // A fabric's vertices are its warp's (its weft group shares them).
+    if (!isFabricWeft(yarn)) array.markers.push_back(vertices(scene, yarn, width, stamp));
     array.markers.push_back(breaks(y, yarn, width, stamp));
   }
+  for (const Fabric& fabric : scene.fabrics) array.markers.push_back(mesh(scene, fabric, stamp));
   for (const Yarn& yarn : scene.yarns) {
-    array.markers.push_back(label(scene, yarn, stamp));
+    if (!isFabricWeft(yarn)) array.markers.push_back(label(scene, yarn, stamp));
   }
   for (visualization_msgs::Marker& marker : array.markers) {
     if (marker.action == visualization_msgs::Marker::ADD && marker.points.empty() &&
@@ -140,9 +147,36 @@ visualization_msgs::Marker MarkerBuilder::label(const Scene& scene, const Yarn& 
                                                 const ros::Time& stamp) const {
   visualization_msgs::Marker marker =
       baseMarker(yarn, kLabelId, visualization_msgs::Marker::TEXT_VIEW_FACING, kLabelHeight, stamp);
-  marker.text = yarn.name;
+  // A fabric is labelled once, by its own name (at its warp group's marker).
+  marker.text =
+      yarn.fabric >= 0 ? scene.fabrics.at(static_cast<std::size_t>(yarn.fabric)).name : yarn.name;
   marker.pose.position = toPoint(scene.vertices.position[yarn.first_vertex] +
                                  Eigen::Vector3d(0.0, 0.0, 1.5 * kLabelHeight));
+  return marker;
+}
+
+visualization_msgs::Marker MarkerBuilder::mesh(const Scene& scene, const Fabric& fabric,
+                                               const ros::Time& stamp) const {
+  visualization_msgs::Marker marker;
+  marker.header.frame_id = frame_id_;
+  marker.header.stamp = stamp;
+  marker.ns = fabric.name;
+  marker.id = kMeshId;
+  marker.type = visualization_msgs::Marker::TRIANGLE_LIST;
+  marker.action = visualization_msgs::Marker::ADD;
+  marker.pose.orientation.w = 1.0;
+  marker.scale.x = 1.0;
+  marker.scale.y = 1.0;
+  marker.scale.z = 1.0;
+  marker.color = rgba(0.85, 0.78, 0.62);  // unbleached cotton
+  const std::vector<Eigen::Vector3d>& x = scene.vertices.position;
+  for (const FabricCell& cell : fabric.cells) {
+    const bool intact = std::all_of(cell.edge.begin(), cell.edge.end(),
+                                    [&](std::uint32_t e) { return scene.edges.intact(e); });
+    if (!intact) continue;
+    for (const int corner : {0, 1, 3, 0, 3, 2})
+      marker.points.push_back(toPoint(x[cell.corner[corner]]));
+  }
   return marker;
 }
 

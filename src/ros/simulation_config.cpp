@@ -12,6 +12,7 @@
 #include <string>
 
 #include "yarn_tearing/core/scene.hpp"
+#include "yarn_tearing/ros/fabric_spec_loader.hpp"
 #include "yarn_tearing/ros/param_value.hpp"
 #include "yarn_tearing/ros/parameter_bounds.hpp"
 #include "yarn_tearing/ros/parameter_error.hpp"
@@ -146,36 +147,58 @@ SimulationParameters loadPhysics(const PrivateParams& params) {
   return p;
 }
 
-std::vector<YarnSpec> loadYarns(const PrivateParams& params) {
-  const std::string allowed = "a non-empty list of yarns (see config/default.yaml)";
-  const ParamValue yarns = params.required("yarns", allowed);
+/// ~yarns and ~fabrics: at least one yarn or fabric, unique names, within the scene budget.
+void loadBodies(const PrivateParams& params, SimulationConfig& config) {
+  const std::string allowed = "a list of yarns (see config/default.yaml)";
+  const std::optional<ParamValue> yarns = params.get("yarns");
+  const std::optional<ParamValue> fabrics = params.get("fabrics");
+  if (!yarns && !fabrics) {
+    params.required("yarns", allowed + ", or ~fabrics (config/fabric.yaml)");
+  }
   const ParamValue presets =
       params.get("materials").value_or(ParamValue("~materials", XmlRpc::XmlRpcValue()));
-  const std::vector<ParamValue> entries = yarns.elements();
-  if (entries.empty()) {
-    yarns.fail(allowed);
-  }
-  std::vector<YarnSpec> specs;
   std::set<std::string> names;
   std::size_t elements = 0;  // vertices + edges
-  for (const ParamValue& entry : entries) {
-    specs.push_back(loadYarnSpec(entry, presets));
-    if (!names.insert(specs.back().name).second) {
-      entry.member("name").fail("a name that no other yarn has");
+  if (yarns) {
+    const std::vector<ParamValue> entries = yarns->elements();
+    if (entries.empty() && !fabrics) yarns->fail("a non-empty " + allowed);
+    for (const ParamValue& entry : entries) {
+      config.yarns.push_back(loadYarnSpec(entry, presets));
+      if (!names.insert(config.yarns.back().name).second) {
+        entry.member("name").fail("a name that no other yarn or fabric has");
+      }
+      elements += 2 * static_cast<std::size_t>(config.yarns.back().num_vertices) - 1;
     }
-    elements += 2 * static_cast<std::size_t>(specs.back().num_vertices) - 1;
+  }
+  if (fabrics) {
+    const std::vector<ParamValue> entries = fabrics->elements();
+    if (entries.empty() && config.yarns.empty()) {
+      fabrics->fail("a non-empty list of fabrics (see config/fabric.yaml)");
+    }
+    for (const ParamValue& entry : entries) {
+      config.fabrics.push_back(loadFabricSpec(entry, presets));
+      const FabricSpec& spec = config.fabrics.back();
+      if (!names.insert(spec.name).second) {
+        entry.member("name").fail("a name that no other yarn or fabric has");
+      }
+      const auto ends = static_cast<std::size_t>(spec.ends);
+      const auto picks = static_cast<std::size_t>(spec.picks);
+      elements += 3 * ends * picks - ends - picks;
+      if (elements > bounds::kSceneBudget) break;
+    }
   }
   if (elements > bounds::kSceneBudget) {
-    yarns.fail("yarns of at most " + std::to_string(bounds::kSceneBudget) +
-               " vertices + edges in all (the scene budget); these have " +
-               std::to_string(elements));
+    (yarns ? *yarns : *fabrics)
+        .fail("yarns and fabrics of at most " + std::to_string(bounds::kSceneBudget) +
+              " vertices + edges in all (the scene budget); these have " +
+              std::to_string(elements) + " or more");
   }
   try {
-    buildScene(specs);
+    buildScene(config.yarns, config.fabrics);
   } catch (const std::exception& e) {
-    yarns.fail(std::string("yarns that build a scene (") + e.what() + ")");
+    (yarns ? *yarns : *fabrics)
+        .fail(std::string("yarns and fabrics that build a scene (") + e.what() + ")");
   }
-  return specs;
 }
 
 /// Air damping is explicit: c * dt must stay below the lightest yarn's mass per length, or the drag
@@ -197,6 +220,10 @@ double maxStableAirDamping(const SimulationConfig& config) {
   for (const YarnSpec& spec : config.yarns) {
     lightest = std::min(lightest, spec.linearDensity());
   }
+  // A fabric vertex's mass per damped length lies between its two families' linear densities.
+  for (const FabricSpec& spec : config.fabrics) {
+    lightest = std::min({lightest, spec.warp.linearDensity(), spec.weft.linearDensity()});
+  }
   return lightest / config.parameters.time_step;
 }
 
@@ -205,7 +232,7 @@ SimulationConfig loadSimulationConfig(const ros::NodeHandle& private_nh) {
   SimulationConfig config;
   config.node = loadNodeSettings(params);
   config.parameters = loadPhysics(params);
-  config.yarns = loadYarns(params);
+  loadBodies(params, config);
   requireStableDamping(params, config);
   warnUnknownKeys(private_nh, params.askedKeys());
   return config;

@@ -38,10 +38,14 @@ void SupportWrenchPublisher::publish(const Simulator& simulator,
                                      const ros::Time& stamp) {
   const Scene& scene = simulator.scene();
   for (const Yarn& yarn : scene.yarns) {
+    // A fabric's vertices are listed once, under the fabric's name (its weft shares them).
+    if (yarn.fabric >= 0 && yarn.family == FabricFamily::kWeft) continue;
+    const std::string& name =
+        yarn.fabric >= 0 ? scene.fabrics[static_cast<std::size_t>(yarn.fabric)].name : yarn.name;
     std::string error;
-    if (!ros::names::validate(yarn.name, error)) {
-      if (invalid_names_.insert(yarn.name).second) {
-        ROS_WARN("no wrench topics for yarn '%s': not a valid ROS name (%s)", yarn.name.c_str(),
+    if (!ros::names::validate(name, error)) {
+      if (invalid_names_.insert(name).second) {
+        ROS_WARN("no wrench topics for '%s': not a valid ROS name (%s)", name.c_str(),
                  error.c_str());
       }
       continue;
@@ -53,8 +57,8 @@ void SupportWrenchPublisher::publish(const Simulator& simulator,
       }
       const auto grasp = grasp_frames.find(v);
       const bool grasped = grasp != grasp_frames.end();
-      ros::Publisher& publisher = publisherFor((grasped ? "grasp_wrench/" : "pin_wrench/") +
-                                               yarn.name + "/vertex_" + std::to_string(i));
+      ros::Publisher& publisher = publisherFor((grasped ? "grasp_wrench/" : "pin_wrench/") + name +
+                                               "/vertex_" + std::to_string(i));
       if (publisher.getNumSubscribers() == 0) {
         continue;
       }

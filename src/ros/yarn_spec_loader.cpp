@@ -70,24 +70,9 @@ std::vector<int> loadPinned(const ParamValue& pinned, int num_vertices) {
 
 }  // namespace
 
-YarnSpec loadYarnSpec(const ParamValue& yarn, const ParamValue& presets) {
-  if (!yarn.isStruct()) {
-    yarn.fail("a map {name, material, radius, length, num_vertices, start, direction, pinned}");
-  }
-  yarn.requireKeysIn({"name", "material", "radius", "tex", "packing_fraction", "length",
-                      "num_vertices", "start", "direction", "pinned", "end_mass", "weibull_modulus",
-                      "strength_cv", "gauge_length", "seed"});
-  YarnSpec spec;
-  spec.name = yarn.member("name").string(false);
+void loadYarnMaking(const ParamValue& yarn, const ParamValue& presets, YarnSpec& spec) {
   spec.material = loadMaterial(yarn.member("material"), presets);
   loadSize(yarn, spec);
-  loadGeometry(yarn, spec);
-  if (yarn.has("pinned")) {
-    spec.pinned = loadPinned(yarn.member("pinned"), spec.num_vertices);
-  }
-  if (yarn.has("end_mass")) {
-    spec.end_mass = yarn.member("end_mass").number(0.0, bounds::kMaxEndMass, "kg");
-  }
   if (yarn.has("weibull_modulus")) {
     const ParamValue modulus = yarn.member("weibull_modulus");
     const double m = modulus.number(0.0, bounds::kMaxWeibullModulus, "");
@@ -110,6 +95,25 @@ YarnSpec loadYarnSpec(const ParamValue& yarn, const ParamValue& presets) {
   if (yarn.has("seed")) {
     spec.strength_scatter.seed = static_cast<unsigned long long>(
         yarn.member("seed").integer(0, std::numeric_limits<int>::max()));
+  }
+}
+
+YarnSpec loadYarnSpec(const ParamValue& yarn, const ParamValue& presets) {
+  if (!yarn.isStruct()) {
+    yarn.fail("a map {name, material, radius, length, num_vertices, start, direction, pinned}");
+  }
+  yarn.requireKeysIn({"name", "material", "radius", "tex", "packing_fraction", "length",
+                      "num_vertices", "start", "direction", "pinned", "end_mass", "weibull_modulus",
+                      "strength_cv", "gauge_length", "seed"});
+  YarnSpec spec;
+  spec.name = yarn.member("name").string(false);
+  loadYarnMaking(yarn, presets, spec);
+  loadGeometry(yarn, spec);
+  if (yarn.has("pinned")) {
+    spec.pinned = loadPinned(yarn.member("pinned"), spec.num_vertices);
+  }
+  if (yarn.has("end_mass")) {
+    spec.end_mass = yarn.member("end_mass").number(0.0, bounds::kMaxEndMass, "kg");
   }
   try {
     spec.validate();

@@ -41,7 +41,7 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
     : config_(config),
       nh_(nh),
       private_nh_(private_nh),
-      simulator_(config.parameters, config.yarns),
+      simulator_(config.parameters, config.yarns, config.fabrics),
       tf_listener_(tf_buffer_),
       frames_(tf_buffer_, config.node.frame_id, config.node.frame_timeout),
       inputs_(frames_),
@@ -53,6 +53,9 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
       refusal_warnings_(kWarnPeriod, static_cast<std::size_t>(WarningSource::kCount) * kNumReasons),
       wrenches_(private_nh, tf_buffer_, config.node.frame_id) {
   states_pub_ = nh_.advertise<YarnStateArray>("yarn_states", kStateQueue);
+  if (!simulator_.scene().fabrics.empty()) {
+    fabric_states_pub_ = nh_.advertise<FabricStateArray>("fabric_states", kStateQueue);
+  }
   const auto edges = static_cast<std::uint32_t>(simulator_.scene().edges.size());
   breaks_pub_ = nh_.advertise<BreakEvent>("break_events", std::max(kBreakQueue, edges));
   markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("yarn_markers", kStateQueue);
@@ -74,10 +77,12 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
   std_msgs::String materials;
   materials.data = describeMaterialsYaml(simulator_.scene());
   materials_pub_.publish(materials);
-  ROS_INFO("yarn_tearing_node: %zu yarns, %zu vertices, time_step %g s, real_time_factor %g%s",
-           simulator_.scene().yarns.size(), simulator_.scene().vertices.size(),
-           config_.parameters.time_step, config_.node.real_time_factor,
-           config_.node.real_time_factor == 0.0 ? " (as fast as possible)" : "");
+  ROS_INFO(
+      "yarn_tearing_node: %zu yarns, %zu fabrics, %zu vertices, time_step %g s, real_time_factor "
+      "%g%s",
+      config_.yarns.size(), config_.fabrics.size(), simulator_.scene().vertices.size(),
+      config_.parameters.time_step, config_.node.real_time_factor,
+      config_.node.real_time_factor == 0.0 ? " (as fast as possible)" : "");
 }
 
 void YarnTearingNode::run() {
@@ -176,6 +181,14 @@ void YarnTearingNode::publishBreakEvents() {
         toBreakEventMsg(event, simulator_.scene(), config_.node.frame_id, stampOf(event.time));
     breaks_pub_.publish(msg);
     markers_.addBreak(event.yarn, event.position);
+    if (!msg.fabric.empty()) {
+      ROS_INFO(
+          "fabric '%s' tore: %s yarn %d, segment %d (vertices %d-%d) at t = %.4f s: tension %.4g "
+          "N, stress %.4g Pa, strain %.4g",
+          msg.fabric.c_str(), familyName(event.segment.family), msg.fabric_yarn, msg.segment,
+          msg.vertex_a, msg.vertex_b, event.time, event.tension, event.stress, event.strain);
+      continue;
+    }
     ROS_INFO(
         "yarn '%s' tore at edge %d (vertices %d-%d) at t = %.4f s: tension %.4g N, "
         "stress %.4g Pa, strain %.4g",
@@ -189,6 +202,9 @@ void YarnTearingNode::publishState() {
   const ros::Time stamp = stampOf(simulator_.time());
   if (states_pub_.getNumSubscribers() > 0) {
     states_pub_.publish(toYarnStateArray(simulator_, config_.node.frame_id, stamp));
+  }
+  if (fabric_states_pub_ && fabric_states_pub_.getNumSubscribers() > 0) {
+    fabric_states_pub_.publish(toFabricStateArray(simulator_, config_.node.frame_id, stamp));
   }
   if (markers_pub_.getNumSubscribers() > 0) {
     markers_pub_.publish(markers_.build(scene, stamp));

@@ -23,6 +23,11 @@ std_msgs::ColorRGBA stressColor(double stress_ratio);
 ///   id 2 CUBE_LIST   the positions where the yarn tore;
 ///   id 3 TEXT_VIEW_FACING the yarn's name, 1 cm high, 1.5 cm above its vertex 0 (after the
 ///        other markers of all yarns).
+/// A fabric's warp and weft are drawn as two such yarns, '<fabric>/warp' and '<fabric>/weft'
+/// (segments coloured by stress / breaking stress, breaks), its vertices and its label (the
+/// fabric's name) once, in the warp's namespace; and per fabric (namespace = fabric name):
+///   id 0 TRIANGLE_LIST the cloth, two triangles per cell whose four segments are intact, so torn
+///        cells disappear.
 /// A marker with no points (but the text) is sent as DELETE; the first array starts with one
 /// DELETEALL (clears markers of an earlier run), later ones never do, so RViz does not flicker.
 class MarkerBuilder {
@@ -48,6 +53,8 @@ class MarkerBuilder {
                                       const ros::Time& stamp) const;
   visualization_msgs::Marker label(const Scene& scene, const Yarn& yarn,
                                    const ros::Time& stamp) const;
+  visualization_msgs::Marker mesh(const Scene& scene, const Fabric& fabric,
+                                  const ros::Time& stamp) const;
   visualization_msgs::Marker breaks(std::size_t yarn_index, const Yarn& yarn, double width,
                                     const ros::Time& stamp) const;
 

@@ -32,7 +32,8 @@ constexpr double kMinDirection = 1.0e-6;      ///< |direction| [-]
 constexpr double kMaxDirection = 1.0e6;       ///< |direction| [-]
 constexpr double kMaxWeibullModulus = 1.0e3;  ///< weibull_modulus [-] (0 = none, else >= 1)
 constexpr double kMaxFrameTimeout = 1.0e6;    ///< frame_timeout [s]
-constexpr int kMaxYarnVertices = 100000;      ///< num_vertices of one yarn
+constexpr int kMaxYarnVertices = 100000;     ///< num_vertices of one yarn (ends, picks of a fabric)
+constexpr double kMaxShearRigidity = 1.0e6;  ///< a fabric's shear_rigidity [N/m]
 /// Vertices plus edges over all yarns: checked before anything is allocated (~200 bytes each).
 constexpr std::size_t kSceneBudget = 1000000;
 

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "yarn_tearing/core/fabric_spec.hpp"
 #include "yarn_tearing/core/simulation_parameters.hpp"
 #include "yarn_tearing/core/yarn_spec.hpp"
 #include "yarn_tearing/ros/node_settings.hpp"
@@ -15,6 +16,7 @@ namespace ros_layer {
 struct SimulationConfig {
   SimulationParameters parameters;  ///< physics parameters shared by all yarns
   std::vector<YarnSpec> yarns;      ///< the yarns of the scene, in parameter order
+  std::vector<FabricSpec> fabrics;  ///< the fabrics of the scene (after the yarns), in order
   NodeSettings node;                ///< timing, publishing and drawing settings
 };
 

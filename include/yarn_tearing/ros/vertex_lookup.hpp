@@ -8,8 +8,9 @@
 namespace yarn_tearing {
 namespace ros_layer {
 
-/// Global vertex id of vertex `vertex` (negative counts from the end) of the yarn named `yarn`.
-/// Throws InputRejected naming the unknown yarn (and the known ones) or the allowed index range.
+/// Global vertex id of vertex `vertex` (negative counts from the end) of the yarn or fabric named
+/// `yarn` (a fabric's vertex index is row * ends + column). Throws InputRejected naming the
+/// unknown name (and the known ones) or the allowed index range.
 std::uint32_t lookupVertex(const Scene& scene, const std::string& yarn, int vertex);
 
 }  // namespace ros_layer

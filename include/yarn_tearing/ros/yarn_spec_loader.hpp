@@ -13,5 +13,10 @@ namespace ros_layer {
 ///  the key, value and what is allowed.
 YarnSpec loadYarnSpec(const ParamValue& yarn, const ParamValue& presets);
 
+/// Reads what makes a yarn, as in an entry of ~yarns, into `spec`: material, radius [m] | tex
+/// [g/km] (+ packing_fraction [-]), weibull_modulus [-] or strength_cv [-], gauge_length [m],
+/// seed (a fabric's warp and weft). Throws ParameterError naming the key.
+void loadYarnMaking(const ParamValue& yarn, const ParamValue& presets, YarnSpec& spec);
+
 }  // namespace ros_layer
 }  // namespace yarn_tearing

@@ -105,6 +105,7 @@ class YarnTearingNode {
   WarningThrottle refusal_warnings_;
   SupportWrenchPublisher wrenches_;
   ros::Publisher states_pub_;
+  ros::Publisher fabric_states_pub_;  ///< only when the scene has fabrics
   ros::Publisher breaks_pub_;
   ros::Publisher markers_pub_;
   ros::Publisher materials_pub_;
