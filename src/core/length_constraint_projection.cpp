@@ -5,9 +5,12 @@
 
 namespace yarn_tearing {
 
-ProjectionResult LengthConstraintProjection::project(
-    std::vector<Eigen::Vector3d>& position, const VertexSet& vertices, const EdgeSet& edges,
-    const EdgeStretchLimits& limits, const SimulationParameters& parameters, EdgeGramSolver& gram) {
+ProjectionResult LengthConstraintProjection::project(std::vector<Eigen::Vector3d>& position,
+                                                     const VertexSet& vertices,
+                                                     const EdgeSet& edges,
+                                                     const EdgeStretchLimits& limits,
+                                                     const SimulationParameters& parameters,
+                                                     EdgeGramSolver& gram, ContactSet* contacts) {
   time_step2_ = parameters.time_step * parameters.time_step;
   inverse_mass_.resize(vertices.size());
   for (std::size_t v = 0; v < vertices.size(); ++v) inverse_mass_[v] = vertices.inverseMass(v);
@@ -23,9 +26,12 @@ ProjectionResult LengthConstraintProjection::project(
   product_.resize(q);
   stretch_.resize(q);
   multiplier_.assign(q, 0.0);
-  const ProjectionResult result = parameters.projection_method == ProjectionMethod::kGaussSeidel
-                                      ? projectGaussSeidel(position, edges, parameters)
-                                      : projectFast(position, edges, parameters, gram);
+  // Contacts are rows of the Newton steps only: Gauss-Seidel is left to contact-free scenes.
+  if (contacts != nullptr && contacts->empty()) contacts = nullptr;
+  const ProjectionResult result =
+      parameters.projection_method == ProjectionMethod::kGaussSeidel && contacts == nullptr
+          ? projectGaussSeidel(position, edges, parameters)
+          : projectFast(position, edges, parameters, gram, contacts);
   holdEdgesBetweenSupports(position, edges);
   return result;
 }
@@ -42,7 +48,7 @@ void LengthConstraintProjection::holdEdgesBetweenSupports(
 }
 
 double LengthConstraintProjection::forceMismatch(const std::vector<Eigen::Vector3d>& position,
-                                                 const EdgeSet& edges) {
+                                                 const EdgeSet& edges, const ContactSet* contacts) {
   // dx_v = (x''_v - x~_v) - w_v sum_e m_e u_e(x''): how far each vertex is from where the final
   // constraint forces, acting along the final edge directions, would have put it. Counted only
   // where the vertex's sideways stiffness is one the fast iterations treat unstably:
@@ -64,6 +70,8 @@ double LengthConstraintProjection::forceMismatch(const std::vector<Eigen::Vector
     sideways_stiffness_[a] += inverse_mass_[a] * stiffness;
     sideways_stiffness_[b] += inverse_mass_[b] * stiffness;
   }
+  // The obstacles' impulses move the vertices too.
+  if (contacts != nullptr) contacts->addImpulses(inverse_mass_, -1.0, vertex_sum_);
   double mismatch = 0.0;
   for (std::size_t v = 0; v < position.size(); ++v) {
     if (sideways_stiffness_[v] > 1.0 && vertex_scale_[v] > 0.0) {
@@ -160,7 +168,8 @@ void LengthConstraintProjection::solveComplementarity(const EdgeSet& edges, Edge
 ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vector3d>& position,
                                                          const EdgeSet& edges,
                                                          const SimulationParameters& parameters,
-                                                         EdgeGramSolver& gram) {
+                                                         EdgeGramSolver& gram,
+                                                         ContactSet* contacts) {
   GramSystem system;
   system.direction = &direction_;
   system.vertex_weight = &inverse_mass_;
@@ -172,33 +181,68 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
   vertex_scale_.resize(position.size());
   sideways_stiffness_.resize(position.size());
   predicted_ = position;
+  if (contacts != nullptr) {
+    // Newton steps from where the free vertices started (clear of the obstacles, the edges
+    // near their limits), not from the prediction, which a pulled end may put metres away.
+    const std::vector<Eigen::Vector3d>& start = contacts->start();
+    for (std::size_t v = 0; v < position.size(); ++v) {
+      if (inverse_mass_[v] > 0.0) position[v] = start[v];
+    }
+    if (last_multiplier_.size() == multiplier_.size()) multiplier_ = last_multiplier_;
+  }
   ProjectionResult result;
   result.max_violation = evaluate(position, edges);
+  if (contacts != nullptr) {
+    contacts->linearize(position);
+    result.max_penetration = contacts->maxPenetration();
+  }
   // Warm start: the edges that were taut at the end of the last step most likely still are.
   was_taut_.resize(edges.size(), 0);
   for (std::size_t e = 0; e < edges.size(); ++e) active_[e] |= candidate_[e] & was_taut_[e];
   bool use_newton = false;
   for (;;) {
-    result.converged = result.max_violation <= parameters.constraint_tolerance;
+    // With contacts the iterations start at the step's start, which is not the answer.
+    result.converged =
+        result.max_violation <= parameters.constraint_tolerance &&
+        result.max_penetration <= parameters.constraint_tolerance &&
+        (contacts == nullptr || (result.iterations > 0 && !newton_.frictionChanged() &&
+                                 last_move_ <= parameters.constraint_tolerance));
     if (result.converged) {
       // Held to their limits, but do the constraint forces act along the final edge directions?
       // Where they act along the directions the iterations started from, a light vertex on a
       // taut span is flung across the line (the span's transverse stiffness treated explicitly,
       // unstable for dt^2 T / (m l) > 1): then finish with Newton steps, whose geometric
       // stiffness makes that part implicit too.
-      result.force_mismatch = forceMismatch(position, edges);
+      result.force_mismatch = forceMismatch(position, edges, contacts);
       result.converged = result.force_mismatch <= parameters.constraint_tolerance;
-      use_newton = !result.converged;
+      use_newton = use_newton || !result.converged;
     }
     if (result.converged || result.iterations >= parameters.max_projection_iterations) break;
+    // With contacts, the fast iterations first bring the edges near their limits (a pulled end
+    // may be predicted metres away, too far for Newton steps to start from); then Newton steps
+    // settle the edges and the contacts together.
+    use_newton = use_newton || contacts != nullptr;
     if (use_newton || result.iterations >= kFastIterations) {
       // The fast iterations stall (a light yarn swung hard by a heavy end): finish with Newton
       // steps that include the geometric stiffness.
       for (std::size_t e = 0; e < edges.size(); ++e) {
-        newton_taut_[e] = candidate_[e] && (multiplier_[e] > 0.0 || residual_[e] > 0.0);
+        // With contacts every edge starts taut (pivoting releases the slack ones): guessing a
+        // pulled yarn slack lets the first pass fling it through the obstacles.
+        newton_taut_[e] =
+            candidate_[e] && (multiplier_[e] > 0.0 || residual_[e] > 0.0 || contacts != nullptr);
       }
+      iterate_ = position;
       newton_.apply(predicted_, inverse_mass_, edges, gram.incidence(), stretch_state_, candidate_,
-                    newton_taut_, position, multiplier_);
+                    newton_taut_, position, multiplier_, contacts);
+      // With contacts, a Newton step is accepted only once it hardly moves anything: the
+      // violation alone does not show a stationarity error, which a wrap can let grow.
+      last_move_ = 0.0;
+      for (std::size_t e = 0; e < edges.size(); ++e) {
+        if (!candidate_[e]) continue;
+        for (const std::uint32_t v : {edges.vertex_a[e], edges.vertex_b[e]}) {
+          last_move_ = std::max(last_move_, (position[v] - iterate_[v]).norm() / limit_[e]);
+        }
+      }
     } else {
       // Linearized at the current iterate x_k (directions J, Gram matrix K = J W J^T), moving the
       // vertices by -W J^T (m - m_k) gives C(x_k) - K (m - m_k) - (c/dt^2) m <= 0 for every edge,
@@ -224,8 +268,13 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
     }
     ++result.iterations;
     result.max_violation = evaluate(position, edges);
+    if (contacts != nullptr) {
+      contacts->linearize(position);
+      result.max_penetration = contacts->maxPenetration();
+    }
   }
   for (std::size_t e = 0; e < edges.size(); ++e) was_taut_[e] = multiplier_[e] > 0.0 ? 1 : 0;
+  last_multiplier_ = multiplier_;
   return result;
 }
 

@@ -86,6 +86,12 @@ void Simulator::resetWorkspace() {
   work_.start_velocity.assign(n, Eigen::Vector3d::Zero());
   work_.constraint_tension.assign(scene_.edges.size(), 0.0);
   work_.gram.setTopology(scene_.edges, n);
+  work_.contacts.clear();
+  work_.vertex_radius.resize(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    work_.vertex_radius[v] = scene_.yarns[scene_.vertices.yarn[v]].radius;
+  }
+  contact_wrench_.assign(obstacles_.size(), ContactWrench{});
   work_.gram.forceGeneralPath(parameters_.force_general_solver);
 }
 
@@ -177,8 +183,24 @@ void Simulator::predictPositions() {
 void Simulator::projectLengthConstraints() {
   VertexSet& vertices = scene_.vertices;
   EdgeSet& edges = scene_.edges;
-  const ProjectionResult result = work_.projection.project(
-      vertices.position, vertices, edges, work_.stretch_limits, parameters_, work_.gram);
+  work_.contacts.clear();
+  if (!obstacles_.empty()) {
+    inverse_mass_.resize(vertices.size());
+    for (std::size_t v = 0; v < vertices.size(); ++v) inverse_mass_[v] = vertices.inverseMass(v);
+    ContactSet::Input input;
+    input.obstacles = &obstacles_;
+    input.previous_pose = &previous_pose_;
+    input.start = &work_.start_position;
+    input.predicted = &vertices.position;
+    input.inverse_mass = &inverse_mass_;
+    input.vertex_radius = &work_.vertex_radius;
+    input.edges = &edges;
+    work_.contacts.detect(input);
+  }
+  const ProjectionResult result =
+      work_.projection.project(vertices.position, vertices, edges, work_.stretch_limits,
+                               parameters_, work_.gram, &work_.contacts);
+  applyContactForces();
   for (std::size_t e = 0; e < edges.size(); ++e) {
     work_.constraint_tension[e] = work_.projection.constraintForce(e);
   }
@@ -186,11 +208,30 @@ void Simulator::projectLengthConstraints() {
   health_.max_constraint_violation = result.max_violation;
   health_.projection_converged = result.converged;
   health_.force_mismatch = result.force_mismatch;
+  health_.max_penetration = result.max_penetration;
   const double dt = parameters_.time_step;
   for (std::size_t v = 0; v < vertices.size(); ++v) {
     if (vertices.motion[v] == VertexMotion::kFree) {
       vertices.velocity[v] = (vertices.position[v] - work_.start_position[v]) / dt;
     }
+  }
+}
+
+void Simulator::applyContactForces() {
+  for (std::size_t o = 0; o < obstacles_.size(); ++o) {
+    contact_wrench_[o] = ContactWrench{};
+    previous_pose_[o] = obstacles_[o].pose;
+  }
+  const double dt2 = parameters_.time_step * parameters_.time_step;
+  const std::vector<Eigen::Vector3d>& x = scene_.vertices.position;
+  for (const Contact& c : work_.contacts.contacts()) {
+    const Eigen::Vector3d force = c.impulse() / dt2;  // on the yarn [N]
+    // An external force of the step: the tension estimate's rows and the holders count it.
+    work_.force[c.a] += (1.0 - c.t) * force;
+    if (c.b != c.a) work_.force[c.b] += c.t * force;
+    ContactWrench& wrench = contact_wrench_[c.obstacle];
+    wrench.force -= force;
+    wrench.torque -= (c.point(x) - obstacles_[c.obstacle].pose.translation()).cross(force);
   }
 }
 
@@ -269,6 +310,26 @@ void Simulator::releaseVertex(std::uint32_t vertex) {
   const bool was_pinned = initial_scene_.vertices.motion[vertex] == VertexMotion::kPinned;
   scene_.vertices.motion[vertex] = was_pinned ? VertexMotion::kPinned : VertexMotion::kFree;
   if (was_pinned) scene_.vertices.velocity[vertex].setZero();
+}
+
+void Simulator::setObstacles(const std::vector<Obstacle>& obstacles) {
+  for (const Obstacle& o : obstacles) o.validate();
+  obstacles_ = obstacles;
+  previous_pose_.clear();
+  for (const Obstacle& o : obstacles_) previous_pose_.push_back(o.pose);
+  contact_wrench_.assign(obstacles_.size(), ContactWrench{});
+  work_.contacts.clear();
+}
+
+void Simulator::setObstaclePose(std::size_t index, const Eigen::Isometry3d& pose) {
+  if (index >= obstacles_.size()) {
+    throw std::out_of_range("obstacle " + std::to_string(index) + " out of range [0, " +
+                            std::to_string(obstacles_.size()) + ")");
+  }
+  Obstacle moved = obstacles_[index];
+  moved.pose = pose;
+  moved.validate();
+  obstacles_[index] = moved;
 }
 
 std::vector<TearEvent> Simulator::takeTearEvents() {

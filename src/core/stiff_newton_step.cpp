@@ -19,7 +19,7 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
                             const EdgeIncidence& incidence, const EdgeStretchState& stretch_state,
                             const std::vector<std::uint8_t>& taut,
                             const std::vector<Eigen::Vector3d>& position,
-                            const std::vector<double>& multiplier) {
+                            const std::vector<double>& multiplier, const ContactSet* contacts) {
   // Rows in vertex order, each taut edge's row right after its later vertex's: a chain's system
   // is then banded, and the natural ordering factorizes it in O(N) without fill.
   const std::size_t n = position.size();
@@ -34,6 +34,19 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     for (const std::uint32_t* it = incidence.begin(v); it != incidence.end(v); ++it) {
       const std::uint32_t e = *it;
       if (taut[e] && std::max(edges.vertex_a[e], edges.vertex_b[e]) == v) edge_row_[e] = rows++;
+    }
+    if (contacts == nullptr) continue;
+    for (std::uint32_t k = contact_start_[v]; k < contact_start_[v + 1]; ++k) {
+      const std::uint32_t i = contact_order_[k];
+      const Contact& c = contacts->contacts()[i];
+      // A point on a held vertex only (t at its end) cannot be moved: no rows.
+      const bool movable_point = c.mobility(inverse_mass) > 0.0;
+      normal_row_[i] = c.active && movable_point ? rows++ : -1;
+      friction_row_[i] = -1;
+      if (normal_row_[i] >= 0 && c.friction > 0.0 && !c.sliding) {
+        friction_row_[i] = rows;
+        rows += c.frictionDirections();
+      }
     }
   }
   triplets_.clear();
@@ -76,6 +89,7 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     triplets_.emplace_back(re, re, -stretch_state.shift()[e]);
     rhs_[re] = -(length - stretch_state.baseLength()[e]);
   }
+  if (contacts != nullptr) addContactRows(*contacts, inverse_mass, position);
   matrix_.resize(rows, rows);
   matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
   if (banded_) {
@@ -108,8 +122,10 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
                             const EdgeIncidence& incidence, EdgeStretchState& stretch_state,
                             const std::vector<std::uint8_t>& movable,
                             std::vector<std::uint8_t>& taut, std::vector<Eigen::Vector3d>& position,
-                            std::vector<double>& multiplier) {
+                            std::vector<double>& multiplier, ContactSet* contacts) {
   for (std::size_t e = 0; e < edges.size(); ++e) taut[e] = taut[e] & movable[e];
+  friction_changed_ = false;
+  if (contacts != nullptr) sortContacts(*contacts, position.size());
   banded_ = true;
   for (std::size_t e = 0; e < edges.size() && banded_; ++e) {
     banded_ = edges.vertex_b[e] == edges.vertex_a[e] + 1;
@@ -121,8 +137,8 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
   // push, take in the slack ones that the step would stretch (with the taut frontier), solve
   // again.
   for (int pass = 0;; ++pass) {
-    if (!solve(predicted, inverse_mass, edges, incidence, stretch_state, taut, position,
-               multiplier)) {
+    if (!solve(predicted, inverse_mass, edges, incidence, stretch_state, taut, position, multiplier,
+               contacts)) {
       return;
     }
     if (pass == kMaxPivotingPasses) break;
@@ -152,14 +168,231 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
         changed = true;
       }
     }
+    if (contacts != nullptr && pivotContacts(*contacts, inverse_mass, position, false)) {
+      changed = true;
+    }
     if (!changed) break;
     frontier_.grow(edges, incidence, movable, stretch_, taut);
+  }
+  if (contacts != nullptr) {
+    storeContactImpulses(*contacts);
+    // Friction states change between Newton steps only, once the taut edges and touching points
+    // have settled on this linearization: the bound comes from the normal multipliers, and
+    // switching inside the pivoting on passes whose normal forces are still wrong cycles.
+    friction_changed_ = pivotContacts(*contacts, inverse_mass, position, true);
   }
   for (std::size_t v = 0; v < position.size(); ++v) {
     if (vertex_row_[v] >= 0) position[v] += solution_.segment<3>(vertex_row_[v]);
   }
   for (std::size_t e = 0; e < edges.size(); ++e) {
     multiplier[e] = edge_row_[e] >= 0 ? std::max(solution_[edge_row_[e]], 0.0) : 0.0;
+  }
+}
+
+void StiffNewtonStep::addContactRows(const ContactSet& contacts,
+                                     const std::vector<double>& inverse_mass,
+                                     const std::vector<Eigen::Vector3d>& position) {
+  for (std::size_t i = 0; i < contacts.contacts().size(); ++i) {
+    const Contact& c = contacts.contacts()[i];
+    const int ra = vertex_row_[c.a];
+    const int rb = c.b != c.a ? vertex_row_[c.b] : -1;
+    const double wa = 1.0 - c.t;
+    const double wb = c.t;
+    const double shift =
+        kContactCompliance * (wa * wa * inverse_mass[c.a] + wb * wb * inverse_mass[c.b]);
+    // Row r of gradient -(wa d, wb d) on (a, b), C = -d . (p - q), right-hand side -C.
+    const auto row = [&](int r, const Eigen::Vector3d& d, double rhs) {
+      for (int k = 0; k < 3; ++k) {
+        if (ra >= 0) {
+          triplets_.emplace_back(r, ra + k, -wa * d[k]);
+          triplets_.emplace_back(ra + k, r, -wa * d[k]);
+        }
+        if (rb >= 0) {
+          triplets_.emplace_back(r, rb + k, -wb * d[k]);
+          triplets_.emplace_back(rb + k, r, -wb * d[k]);
+        }
+      }
+      triplets_.emplace_back(r, r, -shift);
+      rhs_[r] = rhs;
+    };
+    if (normal_row_[i] >= 0) {
+      row(normal_row_[i], c.normal, c.gap);
+      // Geometric stiffness of the push on a curved surface, m_n Hess C = -m_n Hess(distance):
+      // without it a light vertex pressed onto a post by a taut wrap buzzes sideways and grows.
+      if (c.normal_multiplier > 0.0) {
+        const Eigen::Matrix3d h = -c.normal_multiplier * contacts.curvature(c, position);
+        if (ra >= 0) addBlock(triplets_, ra, ra, wa * wa * h);
+        if (rb >= 0) addBlock(triplets_, rb, rb, wb * wb * h);
+        if (ra >= 0 && rb >= 0) {
+          addBlock(triplets_, ra, rb, wa * wb * h);
+          addBlock(triplets_, rb, ra, wa * wb * h);
+        }
+      }
+    }
+    if (friction_row_[i] >= 0) {
+      const Eigen::Vector3d slip = c.point(position) - c.anchor();
+      for (int k = 0; k < c.frictionDirections(); ++k) {
+        row(friction_row_[i] + k, c.tangent[k], c.tangent[k].dot(slip));
+      }
+    }
+    if (c.sliding) {
+      if (ra >= 0) rhs_.segment<3>(ra) += wa * c.friction_impulse;
+      if (rb >= 0) rhs_.segment<3>(rb) += wb * c.friction_impulse;
+    }
+  }
+}
+
+void StiffNewtonStep::sortContacts(const ContactSet& contacts, std::size_t num_vertices) {
+  const std::vector<Contact>& list = contacts.contacts();
+  normal_row_.assign(list.size(), -1);
+  friction_row_.assign(list.size(), -1);
+  contact_start_.assign(num_vertices + 1, 0);
+  for (const Contact& c : list) ++contact_start_[std::max(c.a, c.b) + 1];
+  for (std::size_t v = 0; v < num_vertices; ++v) contact_start_[v + 1] += contact_start_[v];
+  contact_order_.resize(list.size());
+  contact_fill_.assign(contact_start_.begin(), contact_start_.end() - 1);
+  for (std::uint32_t i = 0; i < list.size(); ++i) {
+    contact_order_[contact_fill_[std::max(list[i].a, list[i].b)]++] = i;
+  }
+}
+
+Eigen::Vector3d StiffNewtonStep::frictionImpulse(const Contact& c, int row) const {
+  Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
+  for (int k = 0; k < c.frictionDirections(); ++k) impulse += solution_[row + k] * c.tangent[k];
+  return impulse;
+}
+
+Eigen::Vector3d StiffNewtonStep::pointResponse(const Contact& c, const Eigen::Vector3d& direction) {
+  response_.setZero(rhs_.size());
+  const int ra = vertex_row_[c.a];
+  const int rb = vertex_row_[c.b];
+  if (ra >= 0) response_.segment<3>(ra) = (1.0 - c.t) * direction;
+  if (rb >= 0) response_.segment<3>(rb) += c.t * direction;
+  response_ = banded_ ? Eigen::VectorXd(banded_factorization_.ldlt.solve(response_))
+                      : general_factorization_.solve(response_);
+  Eigen::Vector3d move = Eigen::Vector3d::Zero();
+  if (ra >= 0) move += (1.0 - c.t) * response_.segment<3>(ra);
+  if (rb >= 0) move += c.t * response_.segment<3>(rb);
+  return move;
+}
+
+Eigen::Vector3d StiffNewtonStep::pointMove(const Contact& c) const {
+  Eigen::Vector3d move = Eigen::Vector3d::Zero();
+  if (vertex_row_[c.a] >= 0) move += (1.0 - c.t) * solution_.segment<3>(vertex_row_[c.a]);
+  if (c.b != c.a && vertex_row_[c.b] >= 0) move += c.t * solution_.segment<3>(vertex_row_[c.b]);
+  return move;
+}
+
+bool StiffNewtonStep::pivotContacts(ContactSet& contacts, const std::vector<double>& inverse_mass,
+                                    const std::vector<Eigen::Vector3d>& position, bool friction) {
+  bool changed = false;
+  std::vector<Contact>& list = contacts.contacts();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    Contact& c = list[i];
+    const Eigen::Vector3d move = pointMove(c);
+    if (!friction && !c.active && c.enabled && c.mobility(inverse_mass) > 0.0) {
+      // Taken in when the step would push the point into the obstacle.
+      if (c.gap + c.normal.dot(move) < -kSlackTolerance * c.scale) {
+        c.active = true;
+        c.sliding = c.friction > 0.0;  // frictionless until the friction states are chosen
+        c.friction_impulse.setZero();
+        changed = true;
+      }
+      continue;
+    }
+    // Impulse [kg m] that moves the point by kSlackTolerance of its scale: smaller multipliers
+    // and friction excesses are round-off, and switching on them would only chatter.
+    const double mobility = c.mobility(inverse_mass);
+    if (!c.active || !(mobility > 0.0) || normal_row_[i] < 0) continue;
+    const double negligible = kSlackTolerance * c.scale / mobility;
+    const double normal = solution_[normal_row_[i]];
+    if (!friction && normal < -negligible) {
+      // It would pull: the point leaves the obstacle.
+      c.active = false;
+      c.friction_impulse.setZero();
+      changed = true;
+      continue;
+    }
+    if (!(c.friction > 0.0)) continue;
+    const double bound = c.friction * std::max(normal, 0.0);
+    if (c.frictionDirections() == 0) {
+      if (pivotSegmentFriction(c, bound, negligible, move, position, friction)) changed = true;
+      continue;
+    }
+    if (!friction) {
+      // A sliding point's friction is mu times its normal force of this very solve: re-solved
+      // until the two agree (the direction is settled between Newton steps).
+      const double magnitude = c.friction_impulse.norm();
+      if (c.sliding && magnitude > 0.0 &&
+          std::abs(magnitude - bound) > kFrictionTolerance * bound + negligible) {
+        c.friction_impulse *= bound / magnitude;
+        changed = true;
+      }
+      continue;
+    }
+    if (!c.sliding) {
+      const Eigen::Vector3d held = frictionImpulse(c, friction_row_[i]);
+      if (held.norm() > bound * (1.0 + kFrictionMargin) + negligible) {
+        c.sliding = true;
+        c.friction_impulse = bound * held.normalized();
+        changed = true;
+      }
+      continue;
+    }
+    // Sliding: friction opposes the slip of the point from where it stuck.
+    Eigen::Vector3d slip = c.point(position) + move - c.anchor();
+    slip -= c.normal.dot(slip) * c.normal;
+    if (c.frictionDirections() == 1) slip = c.tangent[0].dot(slip) * c.tangent[0];
+    if (!(slip.norm() > kSlackTolerance * c.scale) || slip.dot(c.friction_impulse) >= 0.0) {
+      c.sliding = false;  // the slip turned round: it sticks
+      c.friction_impulse.setZero();
+      changed = true;
+      continue;
+    }
+    const Eigen::Vector3d impulse = -bound * slip.normalized();
+    if ((impulse - c.friction_impulse).norm() > kFrictionTolerance * bound + negligible) {
+      c.friction_impulse = impulse;
+      changed = true;
+    }
+  }
+  return changed;
+}
+
+bool StiffNewtonStep::pivotSegmentFriction(Contact& c, double bound, double negligible,
+                                           const Eigen::Vector3d& move,
+                                           const std::vector<Eigen::Vector3d>& position,
+                                           bool between_steps) {
+  Eigen::Vector3d impulse = c.friction_impulse;
+  if (between_steps) {
+    // The impulse that would hold the point where it stuck, by the point's own response to an
+    // impulse along its slip (one more solve with the factorization at hand), kept in the cone.
+    Eigen::Vector3d slip = c.point(position) + move - c.anchor();
+    slip -= c.normal.dot(slip) * c.normal;
+    const double length = slip.norm();
+    if (length > kSlackTolerance * c.scale) {
+      const Eigen::Vector3d direction = slip / length;
+      const double response = direction.dot(pointResponse(c, direction));
+      if (response > 0.0) impulse -= (length / response) * direction;
+    }
+  }
+  const double magnitude = impulse.norm();
+  if (magnitude > bound) impulse *= bound / magnitude;
+  if ((impulse - c.friction_impulse).norm() <= kFrictionTolerance * bound + negligible)
+    return false;
+  c.friction_impulse = impulse;
+  return true;
+}
+
+void StiffNewtonStep::storeContactImpulses(ContactSet& contacts) const {
+  std::vector<Contact>& list = contacts.contacts();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    Contact& c = list[i];
+    c.normal_multiplier = normal_row_[i] >= 0 ? std::max(solution_[normal_row_[i]], 0.0) : 0.0;
+    if (friction_row_[i] >= 0) {
+      c.friction_impulse = frictionImpulse(c, friction_row_[i]);
+    } else if (!c.sliding) {
+      c.friction_impulse.setZero();
+    }
   }
 }
 

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "yarn_tearing/core/contact_set.hpp"
 #include "yarn_tearing/core/edge_gram_solver.hpp"
 #include "yarn_tearing/core/edge_set.hpp"
 #include "yarn_tearing/core/edge_stretch_limits.hpp"
@@ -19,12 +20,14 @@ namespace yarn_tearing {
 struct ProjectionResult {
   int iterations = 0;          ///< iterations (direction updates) or Gauss–Seidel sweeps
   double max_violation = 0.0;  ///< max (length - limit) / limit over intact edges [-]
+  /// Largest penetration of a contact point into an obstacle, relative to its edge length [-].
+  double max_penetration = 0.0;
   /// max over free vertices of |(x'' - x~) - W J(x'')^T m| / l [-]: how far the constraint
   /// forces, taken along the final edge directions, are from explaining each vertex's
   /// correction (l its longest incident limit), over the vertices whose sideways stiffness the
   /// fast iterations treat unstably ((omega dt)^2 = w sum_e m_e / l_e > 1). Fast projection only.
   double force_mismatch = 0.0;
-  bool converged = false;  ///< max_violation and force_mismatch <= tolerance
+  bool converged = false;  ///< max_violation, max_penetration, force_mismatch <= tolerance
 };
 
 /// Stage 3: limits every intact edge, stretch only, to
@@ -49,13 +52,19 @@ struct ProjectionResult {
 /// edge per pass. Edges whose vertices are all pinned or kinematic cannot be corrected and are
 /// not counted in the violation; their force is that of a stiff spring of the same compliance
 /// (and stop) at the length their holders give them, so they carry tension and can tear.
+///
+/// Contacts with obstacles (ContactSet: non-penetration of vertices and segment points, Coulomb
+/// friction) are more rows of the same complementarity problem. When a step has any, the
+/// projection runs the Newton steps (StiffNewtonStep) from its first iteration, which carry the
+/// contact rows beside the edges' and settle both by the same pivoting.
 class LengthConstraintProjection {
  public:
   /// Projects `position` in place. `limits` gives each edge's compliance c [m/N] and largest
   /// stretch [m]; masses and supports come from `vertices`.
   ProjectionResult project(std::vector<Eigen::Vector3d>& position, const VertexSet& vertices,
                            const EdgeSet& edges, const EdgeStretchLimits& limits,
-                           const SimulationParameters& parameters, EdgeGramSolver& gram);
+                           const SimulationParameters& parameters, EdgeGramSolver& gram,
+                           ContactSet* contacts = nullptr);
 
   /// Force each edge's constraint exerted in the last projection [N] (0 where inactive).
   double constraintForce(std::size_t e) const { return multiplier_[e] / time_step2_; }
@@ -69,11 +78,13 @@ class LengthConstraintProjection {
   /// length (EdgeStretchState::multiplierAtLength).
   void holdEdgesBetweenSupports(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
   /// ProjectionResult::force_mismatch of `position` (directions from the last evaluate).
-  double forceMismatch(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
+  double forceMismatch(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
+                       const ContactSet* contacts);
   /// Fills directions, residuals and the active set; returns the max relative violation.
   double evaluate(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
   ProjectionResult projectFast(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
-                               const SimulationParameters& parameters, EdgeGramSolver& gram);
+                               const SimulationParameters& parameters, EdgeGramSolver& gram,
+                               ContactSet* contacts);
   /// product = K multiplier, K = J W J^T over the candidate edges (matrix-free, any graph).
   void multiplyGram(const EdgeSet& edges, const std::vector<double>& multiplier,
                     std::vector<double>& product);
@@ -82,15 +93,19 @@ class LengthConstraintProjection {
   ProjectionResult projectGaussSeidel(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
                                       const SimulationParameters& parameters);
 
-  double time_step2_ = 1.0;                  ///< dt^2 [s^2]
-  std::vector<double> inverse_mass_;         ///< [1/kg]
-  EdgeStretchState stretch_state_;           ///< compliant or held at the breaking length
-  std::vector<Eigen::Vector3d> direction_;   ///< unit edge directions
-  std::vector<double> residual_;             ///< length - limit [m]
-  std::vector<double> limit_;                ///< B + S m (EdgeStretchState) [m]
-  std::vector<double> multiplier_;           ///< accumulated multipliers T dt^2 [kg*m]
-  std::vector<double> step_;                 ///< candidate multipliers of a pivoting pass [kg*m]
-  std::vector<std::uint8_t> active_;         ///< edges in the active set
+  double time_step2_ = 1.0;                 ///< dt^2 [s^2]
+  std::vector<double> inverse_mass_;        ///< [1/kg]
+  EdgeStretchState stretch_state_;          ///< compliant or held at the breaking length
+  std::vector<Eigen::Vector3d> direction_;  ///< unit edge directions
+  std::vector<double> residual_;            ///< length - limit [m]
+  std::vector<double> limit_;               ///< B + S m (EdgeStretchState) [m]
+  std::vector<double> multiplier_;          ///< accumulated multipliers T dt^2 [kg*m]
+  /// The multipliers the last projection ended with (Newton steps with contacts start there).
+  std::vector<double> last_multiplier_;
+  std::vector<Eigen::Vector3d> iterate_;  ///< positions before the last Newton step [m]
+  double last_move_ = 0.0;            ///< largest move of the last Newton step per edge length [-]
+  std::vector<double> step_;          ///< candidate multipliers of a pivoting pass [kg*m]
+  std::vector<std::uint8_t> active_;  ///< edges in the active set
   std::vector<std::uint8_t> candidate_;      ///< intact edges with a movable vertex
   std::vector<std::uint8_t> was_taut_;       ///< edges taut at the end of the last projection
   std::vector<double> target_;               ///< right-hand side of the complementarity problem

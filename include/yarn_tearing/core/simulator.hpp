@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "yarn_tearing/core/obstacle.hpp"
 #include "yarn_tearing/core/scene.hpp"
 #include "yarn_tearing/core/simulation_parameters.hpp"
 #include "yarn_tearing/core/step_health.hpp"
@@ -10,6 +11,13 @@
 #include "yarn_tearing/core/tear_event.hpp"
 
 namespace yarn_tearing {
+
+/// Total force [N] and torque about the obstacle's origin [N m] that the yarns exert on an
+/// obstacle through its contacts in the last step (world frame).
+struct ContactWrench {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   ///< [N]
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();  ///< [N m]
+};
 
 /// Simulates tearable, length-constrained yarns (the paper's method). Deterministic: the same
 /// inputs give bitwise the same outputs. Not thread-safe; one thread drives it.
@@ -52,6 +60,19 @@ class Simulator {
   /// Frees a kinematic vertex (or restores the pin of an initially pinned one).
   void releaseVertex(std::uint32_t vertex);
 
+  /// Replaces the obstacles the yarns touch (kept through reset()). Throws
+  /// std::invalid_argument naming the obstacle and field when one is invalid (the old ones stay).
+  void setObstacles(const std::vector<Obstacle>& obstacles);
+  /// Moves obstacle `index` to `pose` for the next step (a robot link, a finger); points that
+  /// stick to it are carried along. Throws std::out_of_range / std::invalid_argument (non-finite
+  /// or farther than 1e4 m).
+  void setObstaclePose(std::size_t index, const Eigen::Isometry3d& pose);
+  const std::vector<Obstacle>& obstacles() const { return obstacles_; }
+  /// What the yarns exerted on obstacle `index` in the last step (zero while untouched).
+  ContactWrench contactWrench(std::size_t index) const { return contact_wrench_.at(index); }
+  /// The contacts of the last step, with their impulses (force dt^2 [kg m]).
+  const ContactSet& contacts() const { return work_.contacts; }
+
   /// Break events since the last call, in the order they happened; each is returned once.
   std::vector<TearEvent> takeTearEvents();
 
@@ -91,9 +112,15 @@ class Simulator {
   StepHealth health_;
   double time_ = 0.0;
   std::uint64_t step_count_ = 0;
-  bool recoil_pending_ = false;               ///< the last step tore: substep the next one
-  std::vector<Eigen::Vector3d> step_target_;  ///< kinematic targets of the current step [m]
-  std::vector<Eigen::Vector3d> step_start_;   ///< kinematic vertices' start positions [m]
+  bool recoil_pending_ = false;                   ///< the last step tore: substep the next one
+  std::vector<Eigen::Vector3d> step_target_;      ///< kinematic targets of the current step [m]
+  std::vector<Eigen::Vector3d> step_start_;       ///< kinematic vertices' start positions [m]
+  std::vector<Obstacle> obstacles_;               ///< what the yarns touch
+  std::vector<Eigen::Isometry3d> previous_pose_;  ///< each obstacle's pose in the last step
+  std::vector<ContactWrench> contact_wrench_;     ///< per obstacle, from the last step
+  std::vector<double> inverse_mass_;              ///< per vertex, for contact detection [1/kg]
+  /// Adds the contacts' forces to work_.force and sums each obstacle's wrench.
+  void applyContactForces();
 };
 
 }  // namespace yarn_tearing

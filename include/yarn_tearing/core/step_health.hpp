@@ -13,6 +13,9 @@ struct StepHealth {
   /// Largest distance [-, per edge length] between a vertex's correction and the one the final
   /// constraint forces along the final edge directions give (ProjectionResult::force_mismatch).
   double force_mismatch = 0.0;
+  /// Largest penetration of a yarn into an obstacle after the projection, relative to the
+  /// touching edge's length [-] (ProjectionResult::max_penetration).
+  double max_penetration = 0.0;
   double tension_residual = 0.0;  ///< |A T - b| / |b| of the tension least squares [-]
   int breaks = 0;                 ///< edges torn in this step
   /// Yarns (scene indices) this step left with a non-finite value, restored to their initial

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "yarn_tearing/core/contact_set.hpp"
 #include "yarn_tearing/core/edge_gram_solver.hpp"
 #include "yarn_tearing/core/edge_stretch_limits.hpp"
 #include "yarn_tearing/core/length_constraint_projection.hpp"
@@ -21,6 +22,8 @@ struct StepWorkspace {
   std::vector<double> constraint_tension;       ///< constraint part of the tension [N]
   EdgeGramSolver gram;                          ///< J W J^T solver shared by stages 3 and 4
   LengthConstraintProjection projection;        ///< stage 3
+  ContactSet contacts;                          ///< stage 3's contacts with obstacles
+  std::vector<double> vertex_radius;            ///< yarn radius at each vertex [m]
   TensionEstimator estimator;                   ///< stage 4
   Tearing tearing;                              ///< stage 6
 };

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "yarn_tearing/core/contact_set.hpp"
 #include "yarn_tearing/core/edge_incidence.hpp"
 #include "yarn_tearing/core/edge_set.hpp"
 #include "yarn_tearing/core/edge_stretch_state.hpp"
@@ -25,6 +26,13 @@ namespace yarn_tearing {
 /// The taut set is settled by block principal pivoting: edges whose multiplier comes out
 /// negative are released, slack edges the step would stretch are taken in (runs of them at once,
 /// by a TautFrontier), and it is solved again.
+///
+/// Contacts (ContactSet) are more rows of the same system, placed after their later vertex so
+/// that a chain's system stays banded: a touching point's normal row (an equality while it
+/// pushes, released when its multiplier would pull, taken in when the step would push the point
+/// into the obstacle) and, while it sticks, two friction rows that hold it where it was; a point
+/// whose friction would exceed mu m_n slides, with the known impulse mu m_n against its slip in
+/// the right-hand side (m_n of the previous pass), and sticks again when its slip turns round.
 class StiffNewtonStep {
  public:
   /// Moves `position` by one step and overwrites `multiplier` (0 for edges not taut). `taut`
@@ -35,14 +43,42 @@ class StiffNewtonStep {
   void apply(const std::vector<Eigen::Vector3d>& predicted, const std::vector<double>& inverse_mass,
              const EdgeSet& edges, const EdgeIncidence& incidence, EdgeStretchState& stretch_state,
              const std::vector<std::uint8_t>& movable, std::vector<std::uint8_t>& taut,
-             std::vector<Eigen::Vector3d>& position, std::vector<double>& multiplier);
+             std::vector<Eigen::Vector3d>& position, std::vector<double>& multiplier,
+             ContactSet* contacts = nullptr);
+  /// True when the last apply() changed a contact's stick / slip state or sliding impulse: the
+  /// next step of the iteration must run before the projection has converged.
+  bool frictionChanged() const { return friction_changed_; }
 
  private:
   /// Assembles and solves the system for the current `taut` set into solution_.
   bool solve(const std::vector<Eigen::Vector3d>& predicted, const std::vector<double>& inverse_mass,
              const EdgeSet& edges, const EdgeIncidence& incidence,
              const EdgeStretchState& stretch_state, const std::vector<std::uint8_t>& taut,
-             const std::vector<Eigen::Vector3d>& position, const std::vector<double>& multiplier);
+             const std::vector<Eigen::Vector3d>& position, const std::vector<double>& multiplier,
+             const ContactSet* contacts);
+  /// Adds the contacts' rows (numbered by solve) to triplets_ and rhs_.
+  void addContactRows(const ContactSet& contacts, const std::vector<double>& inverse_mass,
+                      const std::vector<Eigen::Vector3d>& position);
+  /// Orders the contacts by their later vertex (contact_order_, contact_start_).
+  void sortContacts(const ContactSet& contacts, std::size_t num_vertices);
+  /// Writes each contact's normal multiplier and friction impulse from the last solution.
+  void storeContactImpulses(ContactSet& contacts) const;
+  /// Pivots the contacts' normal rows, or with `friction` their friction states, after a pass
+  /// (ContactSet); true when any changed.
+  bool pivotContacts(ContactSet& contacts, const std::vector<double>& inverse_mass,
+                     const std::vector<Eigen::Vector3d>& position, bool friction);
+  /// The friction impulse [kg m] of sticking contact `c` whose first friction row is `row`.
+  Eigen::Vector3d frictionImpulse(const Contact& c, int row) const;
+  /// Friction of a segment point (ContactSet): a known impulse in the cone, kept there during the
+  /// pivoting and, `between_steps`, moved to the one that holds the point where it stuck.
+  bool pivotSegmentFriction(Contact& c, double bound, double negligible,
+                            const Eigen::Vector3d& move,
+                            const std::vector<Eigen::Vector3d>& position, bool between_steps);
+  /// How contact `c`'s point moves [m] under a unit impulse [kg m] along `direction` on it, in the
+  /// last factorized system (the pushes of the other rows included).
+  Eigen::Vector3d pointResponse(const Contact& c, const Eigen::Vector3d& direction);
+  /// The solved step's move of contact `c`'s point [m].
+  Eigen::Vector3d pointMove(const Contact& c) const;
 
   /// Length minus base length [m] of a slack edge after the solved step, to first order.
   double linearizedStretch(const EdgeSet& edges, const EdgeStretchState& stretch_state,
@@ -64,8 +100,10 @@ class StiffNewtonStep {
   BandedFactorization banded_factorization_;
   /// Factorization for other graphs, its symbolic analysis kept while the pattern holds.
   PatternCachedLdlt general_factorization_;
-  std::vector<int> vertex_row_;  ///< first row of each free vertex, -1 for supports
-  std::vector<int> edge_row_;    ///< row of each taut edge, -1 otherwise
+  bool friction_changed_ = false;  ///< see frictionChanged()
+  Eigen::VectorXd response_;       ///< scratch of pointResponse
+  std::vector<int> vertex_row_;    ///< first row of each free vertex, -1 for supports
+  std::vector<int> edge_row_;      ///< row of each taut edge, -1 otherwise
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> matrix_;
   Eigen::VectorXd rhs_;
@@ -73,6 +111,20 @@ class StiffNewtonStep {
   std::vector<double> pass_multiplier_;  ///< multiplier of each edge in a pass's solution [kg*m]
   std::vector<double> stretch_;          ///< a pass's linearized stretch of slack edges [m]
   TautFrontier frontier_;                ///< takes in runs of slack edges at once
+  /// Contact indices sorted by their later vertex, and where each vertex's run starts.
+  std::vector<std::uint32_t> contact_order_;
+  std::vector<std::uint32_t> contact_start_;
+  std::vector<std::uint32_t> contact_fill_;  ///< scratch of sortContacts
+  std::vector<int> normal_row_;              ///< per contact: its normal row, -1 when inactive
+  std::vector<int> friction_row_;            ///< per contact: its first friction row, -1 when none
+  /// Compliance of contact rows relative to the row's own w sum [-]: keeps the system
+  /// quasi-definite where contact rows are (nearly) dependent, e.g. two obstacles on a vertex.
+  static constexpr double kContactCompliance = 1e-9;
+  /// Relative margin on the friction bound, so a point right at it does not flip on round-off.
+  static constexpr double kFrictionMargin = 1e-9;
+  /// Relative change of a sliding impulse that needs another Newton step [-] (its bound and
+  /// direction follow the iterate, converging with it).
+  static constexpr double kFrictionTolerance = 1e-6;
 };
 
 }  // namespace yarn_tearing

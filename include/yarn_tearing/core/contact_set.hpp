@@ -1,0 +1,117 @@
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <vector>
+
+#include "yarn_tearing/core/edge_set.hpp"
+#include "yarn_tearing/core/obstacle.hpp"
+
+namespace yarn_tearing {
+
+/// One point where a yarn may touch an obstacle in this step: a vertex (on flat faces), or a
+/// segment's closest point (on round solids, and inside a segment over a box's edge), so that a
+/// long segment cannot pass through a thin peg. The point is p(x) = (1 - t) x_a + t x_b. Its rows
+/// in the projection are of the length constraints' form (C(x) <= 0 or = 0, a multiplier m
+/// [kg m] = force dt^2, the vertices moved by -W grad C m):
+///   normal:   C_n = -(distance(p) - r) <= 0,  m_n >= 0 (pushes out, never pulls);
+///   friction at a vertex: C_k = -tau_k . (p - anchor) = 0 for two tangents tau_k while it sticks
+///             (|m_t| <= mu m_n); once |m_t| would exceed mu m_n it slides, and friction is the
+///             known impulse mu m_n against the slip (Coulomb: static = kinetic);
+///   friction at a segment point: a known impulse in the cone |f| <= mu m_n, moved between
+///             Newton steps to the one that holds the point where it stuck (StiffNewtonStep).
+struct Contact {
+  std::uint32_t a = 0;         ///< first vertex (global id)
+  std::uint32_t b = 0;         ///< second vertex (= a for a vertex contact)
+  double t = 0.0;              ///< weight of b in the contact point [-]
+  std::uint32_t obstacle = 0;  ///< index of the obstacle
+  double radius = 0.0;         ///< yarn radius r [m]
+  double scale = 0.0;          ///< length the tolerances are relative to (edge length) [m]
+  double friction = 0.0;       ///< mu [-]
+  Eigen::Vector3d normal;      ///< outward normal at the current linearization
+  /// Unit tangents, normal x tangent[0] = tangent[1] (tangent[0] along the segment if any).
+  Eigen::Vector3d tangent[2];
+  double gap = 0.0;  ///< distance - r at the current linearization [m]
+  /// Where a sticking point stays [m]: the point at parameter t of the segment between these two
+  /// (where a and b started, carried by the obstacle), so that it follows t as the closest point
+  /// moves along a segment lying tangent to a curved obstacle.
+  Eigen::Vector3d anchor_a;
+  Eigen::Vector3d anchor_b;     ///< see anchor_a [m]
+  Eigen::Vector3d side_normal;  ///< outward normal at the step's start (the side it is on)
+  Eigen::Vector3d side_point;   ///< surface point at the step's start [m]
+  bool active = false;          ///< normal row taken as an equality
+  /// False while a segment point sits at the segment's end, where its vertex's contact is.
+  bool enabled = true;
+  bool sliding = false;            ///< friction is the known sliding impulse
+  double normal_multiplier = 0.0;  ///< m_n [kg m]
+  Eigen::Vector3d friction_impulse = Eigen::Vector3d::Zero();  ///< on the yarn [kg m]
+
+  /// The contact point of positions `x` [m].
+  Eigen::Vector3d point(const std::vector<Eigen::Vector3d>& x) const {
+    return (1.0 - t) * x[a] + t * x[b];
+  }
+  /// Friction rows while it sticks: 2 at a vertex; none at a segment point, whose friction is a
+  /// known impulse (pinning every stuck point of a wrap by rows made the Newton steps diverge).
+  int frictionDirections() const { return a == b ? 2 : 0; }
+  /// How far the point moves per unit impulse on it [1/kg]: (1 - t)^2 w_a + t^2 w_b.
+  double mobility(const std::vector<double>& inverse_mass) const {
+    return (1.0 - t) * (1.0 - t) * inverse_mass[a] + t * t * inverse_mass[b];
+  }
+  /// Where the contact point sticks [m].
+  Eigen::Vector3d anchor() const { return (1.0 - t) * anchor_a + t * anchor_b; }
+  /// Impulse of the obstacle on the yarn at this point [kg m] (force times dt^2).
+  Eigen::Vector3d impulse() const { return normal_multiplier * normal + friction_impulse; }
+};
+
+/// The contacts of one step: found from the positions at the step's start and the predicted
+/// ones, linearized at each iterate of the projection, and the impulses they carried.
+class ContactSet {
+ public:
+  /// What detection needs, per vertex and per edge.
+  struct Input {
+    const std::vector<Obstacle>* obstacles = nullptr;
+    /// Each obstacle's pose at the start of the step (a sticking point moves with its obstacle).
+    const std::vector<Eigen::Isometry3d>* previous_pose = nullptr;
+    const std::vector<Eigen::Vector3d>* start = nullptr;      ///< x at the step's start [m]
+    const std::vector<Eigen::Vector3d>* predicted = nullptr;  ///< x~ [m]
+    const std::vector<double>* inverse_mass = nullptr;        ///< 0 for held vertices [1/kg]
+    const std::vector<double>* vertex_radius = nullptr;       ///< yarn radius per vertex [m]
+    const EdgeSet* edges = nullptr;
+  };
+
+  /// Finds every vertex and segment point that may touch an obstacle within this step (its
+  /// distance at the start or the prediction below r plus what it and the obstacle move).
+  void detect(const Input& input);
+  /// Updates normals, tangents, gaps (and the segment parameter t) at positions `x` [m].
+  void linearize(const std::vector<Eigen::Vector3d>& x);
+  /// The curvature (Hessian of the distance) of contact `c`'s obstacle at its point [1/m].
+  Eigen::Matrix3d curvature(const Contact& c, const std::vector<Eigen::Vector3d>& x) const {
+    return (*obstacles_)[c.obstacle].curvature(c.point(x));
+  }
+  /// Largest penetration, relative to each contact's length scale [-] (0 if none).
+  double maxPenetration() const;
+  /// Adds `factor` w_v times each contact's impulse share to `sum` per vertex.
+  void addImpulses(const std::vector<double>& inverse_mass, double factor,
+                   std::vector<Eigen::Vector3d>& sum) const;
+  /// Forgets the impulses of the last step (no contact).
+  void clear() { contacts_.clear(); }
+
+  /// Positions at the step's start given to the last detect() [m].
+  const std::vector<Eigen::Vector3d>& start() const { return *start_; }
+  std::vector<Contact>& contacts() { return contacts_; }
+  const std::vector<Contact>& contacts() const { return contacts_; }
+  bool empty() const { return contacts_.empty(); }
+
+ private:
+  void add(const Input& input, std::uint32_t obstacle, std::uint32_t a, std::uint32_t b, double t,
+           double scale);
+  /// Distance - r and normal of contact `c` at point `p`, on the side the step started.
+  double distance(const Contact& c, const Eigen::Vector3d& p, Eigen::Vector3d& normal) const;
+
+  const std::vector<Obstacle>* obstacles_ = nullptr;
+  const std::vector<Eigen::Vector3d>* start_ = nullptr;
+  std::vector<Contact> contacts_;
+  std::vector<double> scale_;  ///< per vertex: its longest edge [m]
+};
+
+}  // namespace yarn_tearing

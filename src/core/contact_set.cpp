@@ -1,0 +1,170 @@
+#include "yarn_tearing/core/contact_set.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace yarn_tearing {
+namespace {
+
+/// Segment points this close to an end are left to that end's vertex contact [-].
+constexpr double kEndFraction = 0.02;
+
+/// A unit vector orthogonal to unit `n`.
+Eigen::Vector3d orthogonal(const Eigen::Vector3d& n) {
+  const Eigen::Vector3d helper =
+      std::abs(n.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  return n.cross(helper).normalized();
+}
+
+}  // namespace
+
+void ContactSet::detect(const Input& input) {
+  obstacles_ = input.obstacles;
+  start_ = input.start;
+  contacts_.clear();
+  const std::vector<Obstacle>& obstacles = *input.obstacles;
+  const std::vector<Eigen::Vector3d>& predicted = *input.predicted;
+  const std::vector<double>& w = *input.inverse_mass;
+  const EdgeSet& edges = *input.edges;
+  // Each vertex's length scale: its longest edge (torn ones too, so a loose end keeps one).
+  scale_.assign(predicted.size(), 0.0);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    for (const std::uint32_t v : {edges.vertex_a[e], edges.vertex_b[e]}) {
+      scale_[v] = std::max(scale_[v], edges.rest_length[e]);
+    }
+  }
+  for (std::uint32_t o = 0; o < obstacles.size(); ++o) {
+    const Obstacle& obstacle = obstacles[o];
+    const double bound = obstacle.boundingRadius();
+    const Eigen::Vector3d center = obstacle.pose.translation();
+    const auto far = [&](const Eigen::Vector3d& p, std::uint32_t v, double extent) {
+      const double reach = extent + scale_[v] + (*input.vertex_radius)[v] +
+                           (predicted[v] - (*input.start)[v]).norm();
+      return std::isfinite(bound) && (p - center).norm() > bound + reach;
+    };
+    // On a round solid each segment has one contact, at its closest point, ends included (two
+    // segments meeting at a vertex may both touch it there: their rows then share the push).
+    // On flat faces the closest points are vertices, and a segment point is added only where
+    // the distance has an inner minimum (a box's edge).
+    const bool round =
+        obstacle.shape == ObstacleShape::kSphere || obstacle.shape == ObstacleShape::kCapsule;
+    for (std::uint32_t v = 0; v < predicted.size() && !round; ++v) {
+      if (w[v] == 0.0 || scale_[v] == 0.0 || far(predicted[v], v, 0.0)) continue;
+      add(input, o, v, v, 0.0, scale_[v]);
+    }
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      if (!edges.intact(e)) continue;
+      const std::uint32_t a = edges.vertex_a[e];
+      const std::uint32_t b = edges.vertex_b[e];
+      if (w[a] + w[b] == 0.0) continue;
+      const Eigen::Vector3d& xa = predicted[a];
+      const Eigen::Vector3d& xb = predicted[b];
+      if (far((xa + xb) / 2, a, (xa - xb).norm() / 2)) continue;
+      const double t = obstacle.closestOnSegment(xa, xb);
+      if (round || (t > kEndFraction && t < 1.0 - kEndFraction)) {
+        add(input, o, a, b, t, edges.rest_length[e]);
+      }
+    }
+  }
+}
+
+void ContactSet::add(const Input& input, std::uint32_t obstacle, std::uint32_t a, std::uint32_t b,
+                     double t, double scale) {
+  const Obstacle& o = (*input.obstacles)[obstacle];
+  Contact c;
+  c.a = a;
+  c.b = b;
+  c.t = t;
+  c.obstacle = obstacle;
+  c.radius = (*input.vertex_radius)[a];
+  c.scale = scale;
+  c.friction = o.friction;
+  // The side the point starts on: its start position carried along by the obstacle's motion.
+  const Eigen::Isometry3d motion = o.pose * (*input.previous_pose)[obstacle].inverse();
+  const Eigen::Vector3d start = motion * c.point(*input.start);
+  const double start_distance = o.signedDistance(start, c.side_normal);
+  c.side_point = start - start_distance * c.side_normal;
+  Eigen::Vector3d normal;
+  const Eigen::Vector3d predicted = c.point(*input.predicted);
+  const double predicted_gap = distance(c, predicted, normal) - c.radius;
+  const double reach = scale + (predicted - start).norm();
+  if (std::min(start_distance - c.radius, predicted_gap) > reach) return;
+  // A point touching at the start sticks where it was; one arriving, where it arrives.
+  const bool touching = start_distance - c.radius <= 1e-6 * scale;
+  c.anchor_a = motion * (*input.start)[a];
+  c.anchor_b = motion * (*input.start)[b];
+  if (!touching) {
+    const Eigen::Vector3d arrival = -std::min(predicted_gap, 0.0) * normal;
+    c.anchor_a = (*input.predicted)[a] + arrival;
+    c.anchor_b = (*input.predicted)[b] + arrival;
+  }
+  c.active = predicted_gap < 0.0;
+  // Friction starts as a sliding impulse of 0 (frictionless) so the touching set settles on
+  // meaningful normal forces before the stick / slip states are chosen.
+  c.sliding = c.friction > 0.0;
+  contacts_.push_back(c);
+}
+
+double ContactSet::distance(const Contact& c, const Eigen::Vector3d& p,
+                            Eigen::Vector3d& normal) const {
+  const double d = (*obstacles_)[c.obstacle].signedDistance(p, normal);
+  if (normal.dot(c.side_normal) >= 0.0) return d;
+  // Through to the other side (a thin peg, a fast yarn): hold it on the side it came from.
+  normal = c.side_normal;
+  return c.side_normal.dot(p - c.side_point);
+}
+
+void ContactSet::linearize(const std::vector<Eigen::Vector3d>& x) {
+  for (Contact& c : contacts_) {
+    // A pushing point keeps its parameter t through the projection: moving it with the
+    // iterate would add its own derivative to the Hessian, which the Newton steps leave out,
+    // and they would then creep instead of converging. A point that does not push follows the
+    // closest point, so that it is taken in where the segment really touches. On a box, where
+    // the closest point may leave the segment's inside for a vertex, it is always followed
+    // (and handed to that vertex's contact).
+    bool at_end = false;
+    const bool box = (*obstacles_)[c.obstacle].shape == ObstacleShape::kBox;
+    if (c.a != c.b && (box || !c.active)) {
+      const double t = (*obstacles_)[c.obstacle].closestOnSegment(x[c.a], x[c.b]);
+      if (box) {
+        at_end = t <= kEndFraction || t >= 1.0 - kEndFraction;
+        c.t = std::clamp(t, kEndFraction, 1.0 - kEndFraction);
+      } else {
+        c.t = t;
+      }
+    }
+    c.gap = distance(c, c.point(x), c.normal) - c.radius;
+    c.enabled = !at_end;
+    if (at_end) {
+      // The segment's closest point has moved to an end, whose vertex contact holds it: two
+      // rows on the same point would make the system singular.
+      c.gap = std::max(c.gap, 0.0);
+      c.active = false;
+      c.normal_multiplier = 0.0;
+      c.friction_impulse.setZero();
+    }
+    const Eigen::Vector3d axis = x[c.b] - x[c.a];
+    const Eigen::Vector3d along = axis - c.normal.dot(axis) * c.normal;
+    c.tangent[0] = c.a != c.b && along.norm() > 1e-9 * axis.norm()
+                       ? Eigen::Vector3d(along.normalized())
+                       : orthogonal(c.normal);
+    c.tangent[1] = c.normal.cross(c.tangent[0]);
+  }
+}
+
+double ContactSet::maxPenetration() const {
+  double worst = 0.0;
+  for (const Contact& c : contacts_) worst = std::max(worst, -c.gap / c.scale);
+  return worst;
+}
+
+void ContactSet::addImpulses(const std::vector<double>& inverse_mass, double factor,
+                             std::vector<Eigen::Vector3d>& sum) const {
+  for (const Contact& c : contacts_) {
+    const Eigen::Vector3d p = factor * c.impulse();
+    sum[c.a] += ((1.0 - c.t) * inverse_mass[c.a]) * p;
+    if (c.b != c.a) sum[c.b] += (c.t * inverse_mass[c.b]) * p;
+  }
+}
+
+}  // namespace yarn_tearing

@@ -1,0 +1,221 @@
+#include "yarn_tearing/core/obstacle.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace yarn_tearing {
+namespace {
+
+constexpr double kLargestSize = 1.0e4;  ///< [m], as the yarns' coordinates
+
+void requireSize(const std::string& name, const char* field, double value) {
+  if (!(value > 0.0 && value <= kLargestSize)) {
+    throw std::invalid_argument("obstacle '" + name + "': " + field +
+                                " must be a finite number in (0, 1e4] [m]");
+  }
+}
+
+/// Signed distance of a point in the obstacle's frame, with its outward normal (obstacle frame).
+double localDistance(const Obstacle& o, const Eigen::Vector3d& p, Eigen::Vector3d& normal) {
+  switch (o.shape) {
+    case ObstacleShape::kPlane:
+      normal = Eigen::Vector3d::UnitZ();
+      return p.z();
+    case ObstacleShape::kSphere: {
+      const double r = p.norm();
+      normal = r > 0.0 ? Eigen::Vector3d(p / r) : Eigen::Vector3d::UnitZ();
+      return r - o.radius;
+    }
+    case ObstacleShape::kCapsule: {
+      const Eigen::Vector3d axis_point(0.0, 0.0, std::clamp(p.z(), -o.half_length, o.half_length));
+      const Eigen::Vector3d d = p - axis_point;
+      const double r = d.norm();
+      normal = r > 0.0 ? Eigen::Vector3d(d / r) : Eigen::Vector3d::UnitX();
+      return r - o.radius;
+    }
+    case ObstacleShape::kBox: {
+      const Eigen::Vector3d q = p.cwiseAbs() - o.half_extents;
+      const Eigen::Vector3d outside = q.cwiseMax(0.0);
+      const double out = outside.norm();
+      if (out > 0.0) {
+        normal = outside.cwiseProduct(p.cwiseSign()) / out;
+        return out;
+      }
+      Eigen::Index axis = 0;
+      const double in = q.maxCoeff(&axis);  // <= 0: the nearest face
+      normal = Eigen::Vector3d::Zero();
+      normal[axis] = p[axis] >= 0.0 ? 1.0 : -1.0;
+      return in;
+    }
+  }
+  normal = Eigen::Vector3d::UnitZ();
+  return std::numeric_limits<double>::infinity();
+}
+
+/// Parameter t in [0, 1] of the point la + t ab closest to the axis segment z in [-h, h]
+/// (closest points of two segments, as in Ericson, Real-Time Collision Detection, 5.1.9).
+double closestToAxis(const Eigen::Vector3d& la, const Eigen::Vector3d& ab, double h) {
+  const Eigen::Vector3d d2(0.0, 0.0, 2.0 * h);
+  const Eigen::Vector3d r = la - Eigen::Vector3d(0.0, 0.0, -h);
+  const double a = ab.squaredNorm();
+  const double e = d2.squaredNorm();
+  const double f = d2.dot(r);
+  if (!(a > 0.0)) return 0.0;
+  const double c = ab.dot(r);
+  const double b = ab.dot(d2);
+  const double denominator = a * e - b * b;
+  double s =
+      denominator > 1e-14 * a * e ? std::clamp((b * f - c * e) / denominator, 0.0, 1.0) : 0.0;
+  const double u = (b * s + f) / e;
+  if (u < 0.0) {
+    s = std::clamp(-c / a, 0.0, 1.0);
+  } else if (u > 1.0) {
+    s = std::clamp((b - c) / a, 0.0, 1.0);
+  }
+  return s;
+}
+
+}  // namespace
+
+void Obstacle::validate() const {
+  if (!pose.matrix().allFinite()) {
+    throw std::invalid_argument("obstacle '" + name + "': pose must be finite");
+  }
+  if (!pose.translation().allFinite() || pose.translation().norm() > kLargestSize) {
+    throw std::invalid_argument("obstacle '" + name + "': position must be within 1e4 m");
+  }
+  if (!(friction >= 0.0 && friction <= 10.0)) {
+    throw std::invalid_argument("obstacle '" + name +
+                                "': friction must be a finite number in [0, 10] [-]");
+  }
+  switch (shape) {
+    case ObstacleShape::kPlane:
+      break;
+    case ObstacleShape::kBox:
+      for (int i = 0; i < 3; ++i) requireSize(name, "half_extents", half_extents[i]);
+      break;
+    case ObstacleShape::kSphere:
+      requireSize(name, "radius", radius);
+      break;
+    case ObstacleShape::kCapsule:
+      requireSize(name, "radius", radius);
+      requireSize(name, "half_length", half_length);
+      break;
+  }
+}
+
+double Obstacle::signedDistance(const Eigen::Vector3d& p, Eigen::Vector3d& normal) const {
+  Eigen::Vector3d local_normal;
+  const double distance = localDistance(*this, pose.inverse(Eigen::Isometry) * p, local_normal);
+  normal = pose.linear() * local_normal;
+  return distance;
+}
+
+double Obstacle::closestOnSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+  Eigen::Vector3d normal;
+  const Eigen::Isometry3d to_local = pose.inverse(Eigen::Isometry);
+  const Eigen::Vector3d la = to_local * a;
+  const Eigen::Vector3d ab = to_local * b - la;
+  const double ab2 = ab.squaredNorm();
+  switch (shape) {
+    case ObstacleShape::kPlane:
+      // Linear along the segment: an end is closest (the first one on a tie).
+      return ab.z() < 0.0 ? 1.0 : 0.0;
+    case ObstacleShape::kSphere:
+      return ab2 > 0.0 ? std::clamp(-la.dot(ab) / ab2, 0.0, 1.0) : 0.0;
+    case ObstacleShape::kCapsule:
+      return closestToAxis(la, ab, half_length);
+    case ObstacleShape::kBox:
+      break;
+  }
+  // Golden-section search of the convex distance along the segment.
+  constexpr double kInverseGolden = 0.6180339887498949;
+  double lo = 0.0;
+  double hi = 1.0;
+  double t1 = hi - kInverseGolden * (hi - lo);
+  double t2 = lo + kInverseGolden * (hi - lo);
+  double f1 = signedDistance(a + t1 * (b - a), normal);
+  double f2 = signedDistance(a + t2 * (b - a), normal);
+  for (int i = 0; i < 40; ++i) {
+    if (f1 <= f2) {
+      hi = t2;
+      t2 = t1;
+      f2 = f1;
+      t1 = hi - kInverseGolden * (hi - lo);
+      f1 = signedDistance(a + t1 * (b - a), normal);
+    } else {
+      lo = t1;
+      t1 = t2;
+      f1 = f2;
+      t2 = lo + kInverseGolden * (hi - lo);
+      f2 = signedDistance(a + t2 * (b - a), normal);
+    }
+  }
+  const double t = 0.5 * (lo + hi);
+  const double ft = signedDistance(a + t * (b - a), normal);
+  const double fa = signedDistance(a, normal);
+  const double fb = signedDistance(b, normal);
+  if (fa <= ft && fa <= fb) return 0.0;
+  if (fb <= ft) return 1.0;
+  return t;
+}
+
+Eigen::Matrix3d Obstacle::curvature(const Eigen::Vector3d& p) const {
+  const Eigen::Vector3d local = pose.inverse(Eigen::Isometry) * p;
+  Eigen::Vector3d normal;
+  const double distance = localDistance(*this, local, normal) + radius;
+  const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - normal * normal.transpose();
+  Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
+  switch (shape) {
+    case ObstacleShape::kPlane:
+      break;
+    case ObstacleShape::kSphere:
+      if (distance > 0.0) h = across / distance;
+      break;
+    case ObstacleShape::kCapsule:
+      if (distance > 0.0) {
+        // Along the axis the cylindrical part does not curve.
+        const bool on_side = std::abs(local.z()) < half_length;
+        const Eigen::Matrix3d axis =
+            Eigen::Vector3d::UnitZ() * Eigen::Vector3d::UnitZ().transpose();
+        h = (on_side ? Eigen::Matrix3d(across - axis) : across) / distance;
+      }
+      break;
+    case ObstacleShape::kBox: {
+      // Outside an edge or a corner the distance is to a line or a point.
+      const Eigen::Vector3d q = local.cwiseAbs() - half_extents;
+      const Eigen::Vector3d outside = q.cwiseMax(0.0);
+      const double d = outside.norm();
+      const int count = (outside.array() > 0.0).count();
+      if (d > 0.0 && count >= 2) {
+        h = across;
+        if (count == 2) {
+          Eigen::Index axis = 0;
+          q.minCoeff(&axis);
+          h -= Eigen::Vector3d::Unit(axis) * Eigen::Vector3d::Unit(axis).transpose();
+        }
+        h /= d;
+      }
+      break;
+    }
+  }
+  return pose.linear() * h * pose.linear().transpose();
+}
+
+double Obstacle::boundingRadius() const {
+  switch (shape) {
+    case ObstacleShape::kPlane:
+      return std::numeric_limits<double>::infinity();
+    case ObstacleShape::kBox:
+      return half_extents.norm();
+    case ObstacleShape::kSphere:
+      return radius;
+    case ObstacleShape::kCapsule:
+      return radius + half_length;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+}  // namespace yarn_tearing
