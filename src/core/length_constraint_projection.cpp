@@ -2,15 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace yarn_tearing {
 
-ProjectionResult LengthConstraintProjection::project(std::vector<Eigen::Vector3d>& position,
-                                                     const VertexSet& vertices,
-                                                     const EdgeSet& edges,
-                                                     const EdgeStretchLimits& limits,
-                                                     const SimulationParameters& parameters,
-                                                     EdgeGramSolver& gram, ContactSet* contacts) {
+ProjectionResult LengthConstraintProjection::project(
+    std::vector<Eigen::Vector3d>& position, const VertexSet& vertices, const EdgeSet& edges,
+    const EdgeStretchLimits& limits, const SimulationParameters& parameters, EdgeGramSolver& gram,
+    ContactSet* contacts, const std::vector<Eigen::Vector3d>* step_start) {
   time_step2_ = parameters.time_step * parameters.time_step;
   inverse_mass_.resize(vertices.size());
   for (std::size_t v = 0; v < vertices.size(); ++v) inverse_mass_[v] = vertices.inverseMass(v);
@@ -31,7 +30,7 @@ ProjectionResult LengthConstraintProjection::project(std::vector<Eigen::Vector3d
   const ProjectionResult result =
       parameters.projection_method == ProjectionMethod::kGaussSeidel && contacts == nullptr
           ? projectGaussSeidel(position, edges, parameters)
-          : projectFast(position, edges, parameters, gram, contacts);
+          : projectFast(position, edges, parameters, gram, contacts, step_start);
   holdEdgesBetweenSupports(position, edges);
   return result;
 }
@@ -47,28 +46,97 @@ void LengthConstraintProjection::holdEdgesBetweenSupports(
   }
 }
 
+void LengthConstraintProjection::computeSidewaysStiffness(const EdgeSet& edges) {
+  // (omega dt)^2 = w_v sum_e m_e / l_e (m_e = T_e dt^2): a vertex on taut edges, pulled sideways,
+  // is pulled back with stiffness sum_e T_e / l_e.
+  sideways_stiffness_.assign(inverse_mass_.size(), 0.0);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (!candidate_[e]) continue;
+    const double stiffness = multiplier_[e] / limit_[e];
+    sideways_stiffness_[edges.vertex_a[e]] += inverse_mass_[edges.vertex_a[e]] * stiffness;
+    sideways_stiffness_[edges.vertex_b[e]] += inverse_mass_[edges.vertex_b[e]] * stiffness;
+  }
+}
+
+void LengthConstraintProjection::chooseCorrectionDirections(
+    const std::vector<Eigen::Vector3d>& step_start, const EdgeSet& edges) {
+  // Only in a piece that a support holds: an edge whose ends take different directions exerts
+  // a small net force (its tension times its turn in the step), which the support takes up
+  // there; a free piece keeps its momentum exactly on final directions.
+  const std::size_t n = inverse_mass_.size();
+  if (last_stiffness_.size() != n) {
+    last_stiffness_.assign(n, std::numeric_limits<double>::infinity());
+  }
+  // (omega dt)^2 scales with dt^2: a step of another length (recoil substeps) rescales it.
+  const double limit = kStartDirectionStiffness * last_time_step2_ / time_step2_;
+  updateHeldVertices(edges);
+  const auto slow = [&](std::uint32_t v) {
+    return held_vertex_[v] != 0 && last_stiffness_[v] <= limit;
+  };
+  start_direction_.resize(edges.size());
+  start_at_a_.assign(edges.size(), 0);
+  start_at_b_.assign(edges.size(), 0);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (!candidate_[e]) continue;
+    const std::uint32_t a = edges.vertex_a[e];
+    const std::uint32_t b = edges.vertex_b[e];
+    const Eigen::Vector3d d = step_start[b] - step_start[a];
+    const double length = d.norm();
+    if (!(length > 0.0)) continue;
+    start_direction_[e] = d / length;
+    if (start_direction_[e].dot(direction_[e]) < kStartDirectionCosine) continue;
+    start_at_a_[e] = slow(a) ? 1 : 0;
+    start_at_b_[e] = slow(b) ? 1 : 0;
+  }
+}
+
+void LengthConstraintProjection::updateHeldVertices(const EdgeSet& edges) {
+  // The pieces change only where an edge tore or a vertex was pinned, grasped or released:
+  // regroup only when the intact edges or the supports differ from the last time.
+  const std::size_t n = inverse_mass_.size();
+  std::uint64_t intact = 0;
+  std::uint64_t supports = 0;
+  std::uint64_t support_sum = 0;
+  for (std::size_t e = 0; e < edges.size(); ++e) intact += edges.intact(e) ? 1 : 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    const bool support = inverse_mass_[v] == 0.0;
+    supports += support ? 1 : 0;
+    support_sum += support ? v : 0;
+  }
+  // Edges only tear (a restored yarn starts a new projection), so their count tells a change.
+  const std::uint64_t signature = (intact << 40) ^ (supports << 20) ^ support_sum;
+  if (held_vertex_.size() == n && signature == held_signature_) return;
+  held_signature_ = signature;
+  pieces_.build(edges, n);
+  held_vertex_.assign(n, 0);
+  for (std::size_t v = 0; v < n; ++v) {
+    if (inverse_mass_[v] == 0.0) held_vertex_[pieces_.root(static_cast<std::uint32_t>(v))] = 1;
+  }
+  for (std::size_t v = 0; v < n; ++v) {
+    held_vertex_[v] = held_vertex_[pieces_.root(static_cast<std::uint32_t>(v))];
+  }
+}
+
 double LengthConstraintProjection::forceMismatch(const std::vector<Eigen::Vector3d>& position,
                                                  const EdgeSet& edges, const ContactSet* contacts) {
-  // dx_v = (x''_v - x~_v) - w_v sum_e m_e u_e(x''): how far each vertex is from where the final
-  // constraint forces, acting along the final edge directions, would have put it. Counted only
+  // dx_v = (x''_v - x~_v) - w_v sum_e m_e u_e: how far each vertex is from where the final
+  // constraint forces, acting along the directions its corrections take (the final edge
+  // directions, or the start ones for a vertex slow sideways), would have put it. Counted only
   // where the vertex's sideways stiffness is one the fast iterations treat unstably:
-  // (omega dt)^2 = w_v sum_e m_e / l_e > 1 (m_e = T_e dt^2), a light vertex on a taut edge.
+  // (omega dt)^2 > 1, a light vertex on a taut edge.
+  computeSidewaysStiffness(edges);
   for (std::size_t v = 0; v < position.size(); ++v) {
     vertex_sum_[v] = position[v] - predicted_[v];
     vertex_scale_[v] = 0.0;
-    sideways_stiffness_[v] = 0.0;
   }
   for (std::size_t e = 0; e < edges.size(); ++e) {
     if (!candidate_[e]) continue;
     const std::uint32_t a = edges.vertex_a[e];
     const std::uint32_t b = edges.vertex_b[e];
-    vertex_sum_[a] -= (inverse_mass_[a] * multiplier_[e]) * direction_[e];
-    vertex_sum_[b] += (inverse_mass_[b] * multiplier_[e]) * direction_[e];
+    vertex_sum_[a] -= (inverse_mass_[a] * multiplier_[e]) * correctionDirection(e, false);
+    vertex_sum_[b] += (inverse_mass_[b] * multiplier_[e]) * correctionDirection(e, true);
     vertex_scale_[a] = std::max(vertex_scale_[a], limit_[e]);
     vertex_scale_[b] = std::max(vertex_scale_[b], limit_[e]);
-    const double stiffness = multiplier_[e] / limit_[e];
-    sideways_stiffness_[a] += inverse_mass_[a] * stiffness;
-    sideways_stiffness_[b] += inverse_mass_[b] * stiffness;
   }
   // The obstacles' impulses move the vertices too.
   if (contacts != nullptr) contacts->addImpulses(inverse_mass_, -1.0, vertex_sum_);
@@ -165,11 +233,10 @@ void LengthConstraintProjection::solveComplementarity(const EdgeSet& edges, Edge
   }
 }
 
-ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vector3d>& position,
-                                                         const EdgeSet& edges,
-                                                         const SimulationParameters& parameters,
-                                                         EdgeGramSolver& gram,
-                                                         ContactSet* contacts) {
+ProjectionResult LengthConstraintProjection::projectFast(
+    std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
+    const SimulationParameters& parameters, EdgeGramSolver& gram, ContactSet* contacts,
+    const std::vector<Eigen::Vector3d>* step_start) {
   GramSystem system;
   system.direction = &direction_;
   system.vertex_weight = &inverse_mass_;
@@ -196,6 +263,11 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
     contacts->linearize(position);
     result.max_penetration = contacts->maxPenetration();
   }
+  start_at_a_.assign(edges.size(), 0);
+  start_at_b_.assign(edges.size(), 0);
+  // Start directions (SHAKE) only without contacts: the contact rows' Newton steps solve the
+  // symmetric system exactly, with final directions.
+  if (step_start != nullptr && contacts == nullptr) chooseCorrectionDirections(*step_start, edges);
   // Warm start: the edges that were taut at the end of the last step most likely still are.
   was_taut_.resize(edges.size(), 0);
   for (std::size_t e = 0; e < edges.size(); ++e) active_[e] |= candidate_[e] & was_taut_[e];
@@ -233,7 +305,10 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
       }
       iterate_ = position;
       newton_.apply(predicted_, inverse_mass_, edges, gram.incidence(), stretch_state_, candidate_,
-                    newton_taut_, position, multiplier_, contacts);
+                    newton_taut_, position, multiplier_, contacts,
+                    contacts == nullptr
+                        ? StartDirections{&start_direction_, &start_at_a_, &start_at_b_}
+                        : StartDirections{});
       // With contacts, a Newton step is accepted only once it hardly moves anything: the
       // violation alone does not show a stationarity error, which a wrap can let grow.
       last_move_ = 0.0;
@@ -262,8 +337,8 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
         if (change == 0.0) continue;
         const std::uint32_t a = edges.vertex_a[e];
         const std::uint32_t b = edges.vertex_b[e];
-        position[a] += (inverse_mass_[a] * change) * direction_[e];
-        position[b] -= (inverse_mass_[b] * change) * direction_[e];
+        position[a] += (inverse_mass_[a] * change) * correctionDirection(e, false);
+        position[b] -= (inverse_mass_[b] * change) * correctionDirection(e, true);
       }
     }
     ++result.iterations;
@@ -275,6 +350,9 @@ ProjectionResult LengthConstraintProjection::projectFast(std::vector<Eigen::Vect
   }
   for (std::size_t e = 0; e < edges.size(); ++e) was_taut_[e] = multiplier_[e] > 0.0 ? 1 : 0;
   last_multiplier_ = multiplier_;
+  if (!result.converged) computeSidewaysStiffness(edges);  // else forceMismatch's is current
+  last_stiffness_.swap(sideways_stiffness_);
+  last_time_step2_ = time_step2_;
   return result;
 }
 

@@ -199,7 +199,7 @@ void Simulator::projectLengthConstraints() {
   }
   const ProjectionResult result =
       work_.projection.project(vertices.position, vertices, edges, work_.stretch_limits,
-                               parameters_, work_.gram, &work_.contacts);
+                               parameters_, work_.gram, &work_.contacts, &work_.start_position);
   applyContactForces();
   for (std::size_t e = 0; e < edges.size(); ++e) {
     work_.constraint_tension[e] = work_.projection.constraintForce(e);

@@ -95,12 +95,82 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
   if (banded_) {
     banded_factorization_.ldlt.compute(matrix_);
     if (banded_factorization_.ldlt.info() != Eigen::Success) return false;
-    solution_ = banded_factorization_.ldlt.solve(rhs_);
-    return banded_factorization_.ldlt.info() == Eigen::Success && solution_.allFinite();
+  } else if (!general_factorization_.factorize(matrix_)) {
+    return false;
   }
-  if (!general_factorization_.factorize(matrix_)) return false;
-  solution_ = general_factorization_.solve(rhs_);
+  if (!solveAssembled(rhs_, solution_)) return false;
+  if (start_.direction == nullptr) return true;
+  // Ends that take the start direction make the exact system unsymmetric; the symmetric one
+  // (current directions everywhere) differs from it by the small turn of each such edge in one
+  // step and by the geometric stiffness of slow vertices, (omega dt)^2 <= 1/4: refine on it.
+  for (int pass = 0; pass < kRefinementPasses; ++pass) {
+    exactResidual(edges, position, inverse_mass, multiplier, stretch_state);
+    if (!solveAssembled(residual_, correction_)) return false;
+    solution_ += correction_;
+    if (correction_.lpNorm<Eigen::Infinity>() <= 1e-12 * solution_.lpNorm<Eigen::Infinity>()) {
+      break;
+    }
+  }
   return solution_.allFinite();
+}
+
+bool StiffNewtonStep::solveAssembled(const Eigen::VectorXd& rhs, Eigen::VectorXd& result) {
+  if (banded_) {
+    result = banded_factorization_.ldlt.solve(rhs);
+    return banded_factorization_.ldlt.info() == Eigen::Success && result.allFinite();
+  }
+  result = general_factorization_.solve(rhs);
+  return result.allFinite();
+}
+
+bool StiffNewtonStep::takesStartDirection(std::size_t e, bool end_b) const {
+  if (start_.direction == nullptr) return false;
+  return end_b ? (*start_.at_b)[e] != 0 : (*start_.at_a)[e] != 0;
+}
+
+void StiffNewtonStep::exactResidual(const EdgeSet& edges,
+                                    const std::vector<Eigen::Vector3d>& position,
+                                    const std::vector<double>& inverse_mass,
+                                    const std::vector<double>& multiplier,
+                                    const EdgeStretchState& stretch_state) {
+  residual_ = rhs_;
+  const auto move = [&](int row) -> Eigen::Vector3d {
+    return row >= 0 ? Eigen::Vector3d(solution_.segment<3>(row)) : Eigen::Vector3d::Zero();
+  };
+  for (std::size_t v = 0; v < position.size(); ++v) {
+    const int r = vertex_row_[v];
+    if (r >= 0) residual_.segment<3>(r) -= solution_.segment<3>(r) / inverse_mass[v];
+  }
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const int re = edge_row_[e];
+    if (re < 0) continue;
+    const int ra = vertex_row_[edges.vertex_a[e]];
+    const int rb = vertex_row_[edges.vertex_b[e]];
+    const Eigen::Vector3d d = position[edges.vertex_b[e]] - position[edges.vertex_a[e]];
+    const double length = d.norm();
+    const Eigen::Vector3d dir = d / length;
+    const Eigen::Vector3d relative = move(rb) - move(ra);
+    const Eigen::Vector3d stiffness =
+        (multiplier[e] / length) * (relative - dir * dir.dot(relative));
+    const double force = solution_[re];
+    // An end that takes the start direction feels the force along it, with no geometric
+    // stiffness (the direction does not move with the vertices).
+    if (ra >= 0) {
+      if (takesStartDirection(e, false)) {
+        residual_.segment<3>(ra) += force * (*start_.direction)[e];
+      } else {
+        residual_.segment<3>(ra) += stiffness + force * dir;
+      }
+    }
+    if (rb >= 0) {
+      if (takesStartDirection(e, true)) {
+        residual_.segment<3>(rb) -= force * (*start_.direction)[e];
+      } else {
+        residual_.segment<3>(rb) -= stiffness + force * dir;
+      }
+    }
+    residual_[re] -= dir.dot(relative) - stretch_state.shift()[e] * force;
+  }
 }
 
 double StiffNewtonStep::linearizedStretch(const EdgeSet& edges,
@@ -122,7 +192,9 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
                             const EdgeIncidence& incidence, EdgeStretchState& stretch_state,
                             const std::vector<std::uint8_t>& movable,
                             std::vector<std::uint8_t>& taut, std::vector<Eigen::Vector3d>& position,
-                            std::vector<double>& multiplier, ContactSet* contacts) {
+                            std::vector<double>& multiplier, ContactSet* contacts,
+                            const StartDirections& start) {
+  start_ = start;
   for (std::size_t e = 0; e < edges.size(); ++e) taut[e] = taut[e] & movable[e];
   friction_changed_ = false;
   if (contacts != nullptr) sortContacts(*contacts, position.size());

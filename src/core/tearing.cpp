@@ -14,14 +14,6 @@ double overstrain(const Scene& scene, std::size_t e) {
 
 }  // namespace
 
-std::uint32_t Tearing::findRoot(std::uint32_t v) {
-  while (parent_[v] != v) {
-    parent_[v] = parent_[parent_[v]];
-    v = parent_[v];
-  }
-  return v;
-}
-
 const std::vector<std::uint32_t>& Tearing::collect(const Scene& scene) {
   collected_.clear();
   const EdgeSet& edges = scene.edges;
@@ -32,17 +24,13 @@ const std::vector<std::uint32_t>& Tearing::collect(const Scene& scene) {
   if (!any) return collected_;
 
   const std::size_t n = scene.vertices.size();
-  parent_.resize(n);
-  for (std::size_t v = 0; v < n; ++v) parent_[v] = static_cast<std::uint32_t>(v);
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    if (edges.intact(e)) parent_[findRoot(edges.vertex_a[e])] = findRoot(edges.vertex_b[e]);
-  }
+  pieces_.build(edges, n);
   best_of_piece_.assign(n, -1);
   best_ratio_.assign(n, 0.0);
   for (std::size_t e = 0; e < edges.size(); ++e) {
     if (!edges.intact(e)) continue;
     const double ratio = overstrain(scene, e);
-    const std::uint32_t root = findRoot(edges.vertex_a[e]);
+    const std::uint32_t root = pieces_.root(edges.vertex_a[e]);
     if (ratio >= 1.0 && ratio > best_ratio_[root]) {
       best_ratio_[root] = ratio;
       best_of_piece_[root] = static_cast<std::int64_t>(e);

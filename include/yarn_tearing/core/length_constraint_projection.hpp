@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "yarn_tearing/core/connected_pieces.hpp"
 #include "yarn_tearing/core/contact_set.hpp"
 #include "yarn_tearing/core/edge_gram_solver.hpp"
 #include "yarn_tearing/core/edge_set.hpp"
@@ -60,11 +61,19 @@ struct ProjectionResult {
 class LengthConstraintProjection {
  public:
   /// Projects `position` in place. `limits` gives each edge's compliance c [m/N] and largest
-  /// stretch [m]; masses and supports come from `vertices`.
+  /// stretch [m]; masses and supports come from `vertices`. With `step_start` [m], the
+  /// positions at the start of the step, a vertex that is slow sideways ((omega dt)^2 <=
+  /// kStartDirectionStiffness at the end of the last projection) in a piece that a support
+  /// holds feels its edges' forces along their directions at the step's start, as in SHAKE
+  /// (symplectic: a swinging weight keeps its energy). Every other vertex, and all without
+  /// `step_start`, feels them along the final directions (backward Euler: stable however stiff
+  /// a light vertex's sideways mode, conserves a free piece's momentum, but damps a swing at
+  /// first order in dt).
   ProjectionResult project(std::vector<Eigen::Vector3d>& position, const VertexSet& vertices,
                            const EdgeSet& edges, const EdgeStretchLimits& limits,
                            const SimulationParameters& parameters, EdgeGramSolver& gram,
-                           ContactSet* contacts = nullptr);
+                           ContactSet* contacts = nullptr,
+                           const std::vector<Eigen::Vector3d>* step_start = nullptr);
 
   /// Force each edge's constraint exerted in the last projection [N] (0 where inactive).
   double constraintForce(std::size_t e) const { return multiplier_[e] / time_step2_; }
@@ -77,6 +86,18 @@ class LengthConstraintProjection {
   /// Sets the multiplier of each intact edge between two pinned or kinematic vertices from its
   /// length (EdgeStretchState::multiplierAtLength).
   void holdEdgesBetweenSupports(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
+  /// Chooses, per edge end, the direction its corrections take: the start direction where the
+  /// vertex is slow sideways and the edge has not turned by much since the step's start.
+  void chooseCorrectionDirections(const std::vector<Eigen::Vector3d>& step_start,
+                                  const EdgeSet& edges);
+  /// Direction [-] along which edge e moves its end vertex v (a or b) in this projection.
+  const Eigen::Vector3d& correctionDirection(std::size_t e, bool end_b) const {
+    return (end_b ? start_at_b_[e] : start_at_a_[e]) ? start_direction_[e] : direction_[e];
+  }
+  /// Sets held_vertex_ (regrouping the pieces only when edges or supports changed).
+  void updateHeldVertices(const EdgeSet& edges);
+  /// (omega dt)^2 of every vertex's sideways mode [-] from the current multipliers.
+  void computeSidewaysStiffness(const EdgeSet& edges);
   /// ProjectionResult::force_mismatch of `position` (directions from the last evaluate).
   double forceMismatch(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
                        const ContactSet* contacts);
@@ -84,7 +105,8 @@ class LengthConstraintProjection {
   double evaluate(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
   ProjectionResult projectFast(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
                                const SimulationParameters& parameters, EdgeGramSolver& gram,
-                               ContactSet* contacts);
+                               ContactSet* contacts,
+                               const std::vector<Eigen::Vector3d>* step_start);
   /// product = K multiplier, K = J W J^T over the candidate edges (matrix-free, any graph).
   void multiplyGram(const EdgeSet& edges, const std::vector<double>& multiplier,
                     std::vector<double>& product);
@@ -119,6 +141,23 @@ class LengthConstraintProjection {
   std::vector<Eigen::Vector3d> vertex_sum_;  ///< per-vertex sum of multiplier * direction
   std::vector<double> vertex_scale_;         ///< longest incident limit per vertex [m]
   std::vector<double> sideways_stiffness_;   ///< (omega dt)^2 of each vertex's sideways mode [-]
+  /// (omega dt)^2 of each vertex's sideways mode at the last projection's end [-] (infinite
+  /// before the first: every vertex starts on final directions), and that projection's dt^2.
+  std::vector<double> last_stiffness_;
+  double last_time_step2_ = 1.0;                  ///< [s^2]
+  std::vector<Eigen::Vector3d> start_direction_;  ///< unit edge directions at the step's start
+  ConnectedPieces pieces_;                        ///< the pieces the intact edges join
+  std::vector<std::uint8_t> held_vertex_;         ///< the vertex's piece has a support
+  std::uint64_t held_signature_ = 0;              ///< intact edges and supports held_vertex_ is for
+  std::vector<std::uint8_t> start_at_a_;  ///< edge moves its vertex a along start_direction_
+  std::vector<std::uint8_t> start_at_b_;  ///< edge moves its vertex b along start_direction_
+  /// Largest (omega dt)^2 [-] of a vertex corrected along start directions: the explicit
+  /// treatment of its sideways mode is stable below 4 (Stormer-Verlet), kept well inside.
+  static constexpr double kStartDirectionStiffness = 0.25;
+  /// Smallest cosine [-] between an edge's start and predicted directions for the start one
+  /// to be used (an edge that turned further, e.g. a whipping slack end, is corrected along
+  /// its current direction).
+  static constexpr double kStartDirectionCosine = 0.99;
   double slack_tolerance_ = 0.0;  ///< relative stretch a slack edge may show before it joins
   static constexpr int kMaxPivotingPasses = 30;  ///< active-set passes per iteration
 };

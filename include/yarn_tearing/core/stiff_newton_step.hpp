@@ -15,6 +15,16 @@
 
 namespace yarn_tearing {
 
+/// Where a projection corrects a vertex along the edge direction at the step's start rather
+/// than along the final one (LengthConstraintProjection): per edge, its start direction and a
+/// flag for each end. Such an end feels its edge's force along the fixed start direction (no
+/// geometric stiffness), as in SHAKE.
+struct StartDirections {
+  const std::vector<Eigen::Vector3d>* direction = nullptr;  ///< unit start direction per edge
+  const std::vector<std::uint8_t>* at_a = nullptr;  ///< vertex a moves along the start direction
+  const std::vector<std::uint8_t>* at_b = nullptr;  ///< vertex b moves along the start direction
+};
+
 /// One Newton step of the exact implicit projection, with geometric stiffness:
 ///   M (x - x~) + J(x)^T m = 0,    C_e(x) - s_e m_e = 0 for the taut edges,  m >= 0,
 /// C_e = |x_b - x_a| - B_e (B_e the base length: the rest length, or the breaking length where
@@ -25,7 +35,9 @@ namespace yarn_tearing {
 /// when a heavy end swings a light yarn), and the fixed point conserves momentum exactly.
 /// The taut set is settled by block principal pivoting: edges whose multiplier comes out
 /// negative are released, slack edges the step would stretch are taken in (runs of them at once,
-/// by a TautFrontier), and it is solved again.
+/// by a TautFrontier), and it is solved again. Edge ends that StartDirections marks take the
+/// start direction instead of J(x) in the force balance; the symmetric matrix with J(x) then
+/// preconditions a few refinement passes on the exact (unsymmetric) system (without contacts).
 ///
 /// Contacts (ContactSet) are more rows of the same system, placed after their later vertex so
 /// that a chain's system stays banded: a touching point's normal row (an equality while it
@@ -44,12 +56,20 @@ class StiffNewtonStep {
              const EdgeSet& edges, const EdgeIncidence& incidence, EdgeStretchState& stretch_state,
              const std::vector<std::uint8_t>& movable, std::vector<std::uint8_t>& taut,
              std::vector<Eigen::Vector3d>& position, std::vector<double>& multiplier,
-             ContactSet* contacts = nullptr);
+             ContactSet* contacts = nullptr, const StartDirections& start = {});
   /// True when the last apply() changed a contact's stick / slip state or sliding impulse: the
   /// next step of the iteration must run before the projection has converged.
   bool frictionChanged() const { return friction_changed_; }
 
  private:
+  /// Whether edge e's force acts on its end b (or a) along its start direction.
+  bool takesStartDirection(std::size_t e, bool end_b) const;
+  /// residual_ = rhs_ - A solution_ for the exact system with start directions [mixed units].
+  void exactResidual(const EdgeSet& edges, const std::vector<Eigen::Vector3d>& position,
+                     const std::vector<double>& inverse_mass, const std::vector<double>& multiplier,
+                     const EdgeStretchState& stretch_state);
+  /// Solves the assembled symmetric system for `rhs`, into `result`.
+  bool solveAssembled(const Eigen::VectorXd& rhs, Eigen::VectorXd& result);
   /// Assembles and solves the system for the current `taut` set into solution_.
   bool solve(const std::vector<Eigen::Vector3d>& predicted, const std::vector<double>& inverse_mass,
              const EdgeSet& edges, const EdgeIncidence& incidence,
@@ -108,6 +128,11 @@ class StiffNewtonStep {
   Eigen::SparseMatrix<double> matrix_;
   Eigen::VectorXd rhs_;
   Eigen::VectorXd solution_;
+  Eigen::VectorXd residual_;    ///< refinement residual
+  Eigen::VectorXd correction_;  ///< refinement correction
+  StartDirections start_;       ///< the start directions of the current apply
+  /// Refinement passes on the exact system when some ends take start directions.
+  static constexpr int kRefinementPasses = 2;
   std::vector<double> pass_multiplier_;  ///< multiplier of each edge in a pass's solution [kg*m]
   std::vector<double> stretch_;          ///< a pass's linearized stretch of slack edges [m]
   TautFrontier frontier_;                ///< takes in runs of slack edges at once

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "yarn_tearing/core/connected_pieces.hpp"
 #include "yarn_tearing/core/scene.hpp"
 #include "yarn_tearing/core/tear_event.hpp"
 
@@ -22,9 +23,7 @@ class Tearing {
   void apply(Scene& scene, double time, double time_step, std::vector<TearEvent>& events);
 
  private:
-  std::uint32_t findRoot(std::uint32_t v);
-
-  std::vector<std::uint32_t> parent_;        ///< union-find over vertices
+  ConnectedPieces pieces_;                   ///< the pieces the edges join
   std::vector<std::int64_t> best_of_piece_;  ///< per root: most over-strained edge, or -1
   std::vector<double> best_ratio_;           ///< per root: its strain / breaking strain
   std::vector<std::uint32_t> collected_;
