@@ -223,7 +223,7 @@ void BM_StageMaterialAndTearing(benchmark::State& state) {
   Tearing tearing;
   for (auto _ : state) {
     updateMaterialResponse(scene.yarns, sim.parameters().time_step, scene.edges);
-    benchmark::DoNotOptimize(tearing.collect(scene).size());
+    benchmark::DoNotOptimize(tearing.collect(scene, 0.0).size());
   }
   state.SetComplexityN(state.range(0));
 }

@@ -81,6 +81,7 @@ void Simulator::resetWorkspace() {
   const std::size_t n = scene_.vertices.size();
   work_.projection = LengthConstraintProjection{};
   work_.estimator = TensionEstimator{};
+  work_.tearing = Tearing{};  // its unloading times belong to the state left behind
   work_.force.assign(n, Eigen::Vector3d::Zero());
   work_.start_position.assign(n, Eigen::Vector3d::Zero());
   work_.start_velocity.assign(n, Eigen::Vector3d::Zero());
@@ -278,7 +279,7 @@ void Simulator::updateMaterial() {
 void Simulator::tear() {
   health_.breaks = 0;
   if (!parameters_.breaking_enabled) return;
-  const std::vector<std::uint32_t>& torn = work_.tearing.collect(scene_);
+  const std::vector<std::uint32_t>& torn = work_.tearing.collect(scene_, time_);
   health_.breaks = static_cast<int>(torn.size());
   work_.tearing.apply(scene_, time_, parameters_.time_step, pending_events_);
 }

@@ -1,6 +1,7 @@
 #include "yarn_tearing/core/tearing.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "yarn_tearing/core/state_at_tear.hpp"
 
@@ -14,12 +15,16 @@ double overstrain(const Scene& scene, std::size_t e) {
 
 }  // namespace
 
-const std::vector<std::uint32_t>& Tearing::collect(const Scene& scene) {
+bool Tearing::unloading(const Scene& scene, std::size_t e, double time) const {
+  return !unloaded_at_.empty() && unloaded_at_[scene.edges.vertex_a[e]] > time;
+}
+
+const std::vector<std::uint32_t>& Tearing::collect(const Scene& scene, double time) {
   collected_.clear();
   const EdgeSet& edges = scene.edges;
   bool any = false;
   for (std::size_t e = 0; e < edges.size() && !any; ++e) {
-    any = edges.intact(e) && overstrain(scene, e) >= 1.0;
+    any = edges.intact(e) && overstrain(scene, e) >= 1.0 && !unloading(scene, e, time);
   }
   if (!any) return collected_;
 
@@ -28,7 +33,7 @@ const std::vector<std::uint32_t>& Tearing::collect(const Scene& scene) {
   best_of_piece_.assign(n, -1);
   best_ratio_.assign(n, 0.0);
   for (std::size_t e = 0; e < edges.size(); ++e) {
-    if (!edges.intact(e)) continue;
+    if (!edges.intact(e) || unloading(scene, e, time)) continue;
     const double ratio = overstrain(scene, e);
     const std::uint32_t root = pieces_.root(edges.vertex_a[e]);
     if (ratio >= 1.0 && ratio > best_ratio_[root]) {
@@ -45,6 +50,7 @@ const std::vector<std::uint32_t>& Tearing::collect(const Scene& scene) {
 
 void Tearing::apply(Scene& scene, double time, double time_step, std::vector<TearEvent>& events) {
   EdgeSet& edges = scene.edges;
+  if (!collected_.empty()) startUnloading(scene, time);
   for (std::uint32_t e : collected_) {
     events.push_back(tearEventOf(scene, e, time, time_step));
     edges.broken[e] = 1;
@@ -54,6 +60,29 @@ void Tearing::apply(Scene& scene, double time, double time_step, std::vector<Tea
     edges.strain_rate[e] = 0.0;
   }
   collected_.clear();
+}
+
+void Tearing::startUnloading(const Scene& scene, double time) {
+  // Each torn piece unloads by an elastic wave from the tear, at c = sqrt(E / rho) of the torn
+  // edge's material, which crosses the piece's rest length in L / c.
+  const EdgeSet& edges = scene.edges;
+  const std::size_t n = scene.vertices.size();
+  piece_length_.assign(n, 0.0);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (edges.intact(e)) piece_length_[pieces_.root(edges.vertex_a[e])] += edges.rest_length[e];
+  }
+  unloading_until_.assign(n, -1.0);
+  for (std::uint32_t e : collected_) {
+    const Material& material = scene.yarns[edges.yarn[e]].material;
+    const double speed = std::sqrt(material.curve.youngsModulus() / material.density);
+    const std::uint32_t root = pieces_.root(edges.vertex_a[e]);
+    unloading_until_[root] = time + piece_length_[root] / speed;
+  }
+  unloaded_at_.resize(n, -1.0);
+  for (std::size_t v = 0; v < n; ++v) {
+    const double until = unloading_until_[pieces_.root(static_cast<std::uint32_t>(v))];
+    if (until > 0.0) unloaded_at_[v] = until;
+  }
 }
 
 }  // namespace yarn_tearing

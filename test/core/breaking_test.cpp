@@ -116,6 +116,19 @@ TEST(Breaking, EachPieceTearsAtMostOnceAStep) {
   }
 }
 
+TEST(Breaking, ResetForgetsTheUnloadingOfEarlierTears) {
+  // A piece does not tear again while a tear's unloading wave crosses it; a reset starts a new
+  // history: the same pull tears the yarn at the same instant again.
+  RampedYarn ramp(cottonLike(), 20.0);
+  const std::vector<TearEvent> first = ramp.runUntilBreak(2.0);
+  ASSERT_EQ(first.size(), 1u);
+  ramp.sim.reset();
+  const std::vector<TearEvent> again = ramp.runUntilBreak(2.0);
+  ASSERT_EQ(again.size(), 1u);
+  EXPECT_EQ(again[0].time, first[0].time);
+  EXPECT_EQ(again[0].edge, first[0].edge);
+}
+
 TEST(Breaking, OverloadHoldsEveryEdgeAtMostAtItsBreakingLength) {
   // 1000 times the breaking force F in one step: every edge stops at its breaking length
   // L0 (1 + eps_b) (plus what the stop, 10^6 times stiffer than the yarn, gives under F:

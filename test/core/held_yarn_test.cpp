@@ -188,7 +188,7 @@ TEST_P(GrippersDrawApart, TearsOnceAtTheBreakingElongationAndForce) {
   std::vector<double> largest_strain(sim.scene().edges.size(), 0.0);
   std::vector<TearEvent> events;
   double torn_at = -1.0;
-  while (sim.time() < 1.0 && (torn_at < 0.0 || sim.time() < torn_at + 0.05)) {
+  while (sim.time() < 1.0 && (torn_at < 0.0 || sim.time() < torn_at + 0.2)) {
     const double t = sim.time() + dt;
     sim.setKinematicTarget(first, first_start - Eigen::Vector3d(speed * t, 0.0, 0.0));
     sim.setKinematicTarget(last, last_start + Eigen::Vector3d(speed * t, 0.0, 0.0));
@@ -218,10 +218,9 @@ TEST_P(GrippersDrawApart, TearsOnceAtTheBreakingElongationAndForce) {
           << sim.time();
     }
   }
-  // Only the first tear is checked: with the recoil substeps a piece flying back past its
-  // gripper can snap taut again at about its breaking stress and tear once more (README, Known
-  // limits: the model has no internal damping); e.g. N 25 at dt 1e-3 with gravity, most at 1e-4.
-  ASSERT_GE(events.size(), 1u) << "N " << num_vertices << ", " << caseName(dt, gravity);
+  // One tear: the pieces stay intact while the tear's unloading wave crosses them (Tearing),
+  // though every edge of this yarn of uniform strength was at its breaking point.
+  ASSERT_EQ(events.size(), 1u) << "N " << num_vertices << ", " << caseName(dt, gravity);
   const double elongation = 2.0 * speed * events[0].time;
   const double breaking_elongation = curve.breakingStrain() * spec.length;
   EXPECT_NEAR(elongation, breaking_elongation, 0.02 * breaking_elongation)

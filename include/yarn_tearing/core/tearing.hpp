@@ -10,19 +10,30 @@
 
 namespace yarn_tearing {
 
-/// Stage 6: an edge tears when its strain reaches its breaking strain (the material's, times the
-/// edge's strength factor). When one segment fails the load drops everywhere, so each step tears
-/// at most the most over-strained edge of each connected piece. Breaks are collected first and
-/// applied after, so the topology never changes while they are chosen.
+/// Stage 6: an edge tears when its strain reaches its breaking strain (EdgeSet::breaking_strain).
+/// When one segment fails the load drops everywhere, so each step tears at most the most
+/// over-strained edge of each connected piece, and a piece a tear leaves does not tear again before
+/// the elastic wave from the tear has crossed it (L / c, c = sqrt(E / rho): the time the load takes
+/// to drop). Breaks are collected first and applied after, so the topology never changes while they
+/// are chosen.
 class Tearing {
  public:
-  /// Global ids of the edges to tear this step (ordered by edge id).
-  const std::vector<std::uint32_t>& collect(const Scene& scene);
+  /// Global ids of the edges to tear this step (ordered by edge id), at simulated `time` [s].
+  const std::vector<std::uint32_t>& collect(const Scene& scene, double time);
   /// Tears the collected edges and appends one event each (time = `time` [s]; the state each
   /// reports follows tearEventOf(), `time_step` [s] the step's Δt).
   void apply(Scene& scene, double time, double time_step, std::vector<TearEvent>& events);
 
  private:
+  /// Whether edge e's piece is still unloading from an earlier tear at `time` [s].
+  bool unloading(const Scene& scene, std::size_t e, double time) const;
+  /// Marks the vertices of each piece a collected edge tears as unloading until the elastic
+  /// wave from the tear has crossed the piece.
+  void startUnloading(const Scene& scene, double time);
+
+  std::vector<double> unloaded_at_;          ///< per vertex: end of its piece's unloading [s]
+  std::vector<double> unloading_until_;      ///< per piece root, scratch [s]
+  std::vector<double> piece_length_;         ///< per piece root: rest length [m], scratch
   ConnectedPieces pieces_;                   ///< the pieces the edges join
   std::vector<std::int64_t> best_of_piece_;  ///< per root: most over-strained edge, or -1
   std::vector<double> best_ratio_;           ///< per root: its strain / breaking strain
