@@ -13,15 +13,6 @@
 namespace yarn_tearing::test {
 namespace {
 
-double kineticEnergy(const Simulator& sim) {
-  const VertexSet& v = sim.scene().vertices;
-  double energy = 0.0;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    if (!v.isSupport(i)) energy += 0.5 * v.mass[i] * v.velocity[i].squaredNorm();
-  }
-  return energy;
-}
-
 struct Recoil {
   double stored = 0.0;     ///< elastic energy at the tear, 1/2 T^2 L0 / (E A) [J]
   double peak = 0.0;       ///< largest kinetic energy at the ends of the 3 steps after it [J]

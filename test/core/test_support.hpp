@@ -49,6 +49,16 @@ inline SimulationParameters parametersWithoutGravity(double dt = 1.0e-3) {
   return p;
 }
 
+/// Kinetic energy of the free vertices [J].
+inline double kineticEnergy(const Simulator& sim) {
+  const VertexSet& v = sim.scene().vertices;
+  double energy = 0.0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (!v.isSupport(i)) energy += 0.5 * v.mass[i] * v.velocity[i].squaredNorm();
+  }
+  return energy;
+}
+
 /// Sum of the intact edge lengths of yarn 0 [m].
 inline double yarnLength(const Simulator& sim) {
   const Scene& s = sim.scene();
