@@ -294,6 +294,12 @@ ProjectionResult LengthConstraintProjection::projectFast(
     // may be predicted metres away, too far for Newton steps to start from); then Newton steps
     // settle the edges and the contacts together.
     use_newton = use_newton || contacts != nullptr;
+    if (result.iterations == kStartDirectionIterations) {
+      // Not converged with start directions (a step that tears or jerks the piece far from
+      // where it started): finish on final directions, which always converge.
+      std::fill(start_at_a_.begin(), start_at_a_.end(), 0);
+      std::fill(start_at_b_.begin(), start_at_b_.end(), 0);
+    }
     if (use_newton || result.iterations >= kFastIterations) {
       // The fast iterations stall (a light yarn swung hard by a heavy end): finish with Newton
       // steps that include the geometric stiffness.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "yarn_tearing/core/state_at_tear.hpp"
 
@@ -64,19 +65,25 @@ void Tearing::apply(Scene& scene, double time, double time_step, std::vector<Tea
 
 void Tearing::startUnloading(const Scene& scene, double time) {
   // Each torn piece unloads by an elastic wave from the tear, at c = sqrt(E / rho) of the torn
-  // edge's material, which crosses the piece's rest length in L / c.
+  // edge's material; it takes about the piece's extent over c (the diagonal of its box: a taut
+  // yarn's length, a fabric's width, not the sum of its segments) to have crossed it.
   const EdgeSet& edges = scene.edges;
+  const std::vector<Eigen::Vector3d>& position = scene.vertices.position;
   const std::size_t n = scene.vertices.size();
-  piece_length_.assign(n, 0.0);
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    if (edges.intact(e)) piece_length_[pieces_.root(edges.vertex_a[e])] += edges.rest_length[e];
+  const double infinite = std::numeric_limits<double>::infinity();
+  box_min_.assign(n, Eigen::Vector3d::Constant(infinite));
+  box_max_.assign(n, Eigen::Vector3d::Constant(-infinite));
+  for (std::size_t v = 0; v < n; ++v) {
+    const std::uint32_t root = pieces_.root(static_cast<std::uint32_t>(v));
+    box_min_[root] = box_min_[root].cwiseMin(position[v]);
+    box_max_[root] = box_max_[root].cwiseMax(position[v]);
   }
   unloading_until_.assign(n, -1.0);
   for (std::uint32_t e : collected_) {
     const Material& material = scene.yarns[edges.yarn[e]].material;
     const double speed = std::sqrt(material.curve.youngsModulus() / material.density);
     const std::uint32_t root = pieces_.root(edges.vertex_a[e]);
-    unloading_until_[root] = time + piece_length_[root] / speed;
+    unloading_until_[root] = time + (box_max_[root] - box_min_[root]).norm() / speed;
   }
   unloaded_at_.resize(n, -1.0);
   for (std::size_t v = 0; v < n; ++v) {

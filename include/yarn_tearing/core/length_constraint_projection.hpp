@@ -154,6 +154,8 @@ class LengthConstraintProjection {
   /// Largest (omega dt)^2 [-] of a vertex corrected along start directions: the explicit
   /// treatment of its sideways mode is stable below 4 (Stormer-Verlet), kept well inside.
   static constexpr double kStartDirectionStiffness = 0.25;
+  /// Iterations after which a projection not yet converged drops the start directions.
+  static constexpr int kStartDirectionIterations = 20;
   /// Smallest cosine [-] between an edge's start and predicted directions for the start one
   /// to be used (an edge that turned further, e.g. a whipping slack end, is corrected along
   /// its current direction).

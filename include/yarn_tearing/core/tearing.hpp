@@ -13,9 +13,9 @@ namespace yarn_tearing {
 /// Stage 6: an edge tears when its strain reaches its breaking strain (EdgeSet::breaking_strain).
 /// When one segment fails the load drops everywhere, so each step tears at most the most
 /// over-strained edge of each connected piece, and a piece a tear leaves does not tear again before
-/// the elastic wave from the tear has crossed it (L / c, c = sqrt(E / rho): the time the load takes
-/// to drop). Breaks are collected first and applied after, so the topology never changes while they
-/// are chosen.
+/// the elastic wave from the tear has crossed it (its extent over c = sqrt(E / rho): the time the
+/// load takes to drop). Breaks are collected first and applied after, so the topology never changes
+/// while they are chosen.
 class Tearing {
  public:
   /// Global ids of the edges to tear this step (ordered by edge id), at simulated `time` [s].
@@ -31,10 +31,11 @@ class Tearing {
   /// wave from the tear has crossed the piece.
   void startUnloading(const Scene& scene, double time);
 
-  std::vector<double> unloaded_at_;          ///< per vertex: end of its piece's unloading [s]
-  std::vector<double> unloading_until_;      ///< per piece root, scratch [s]
-  std::vector<double> piece_length_;         ///< per piece root: rest length [m], scratch
-  ConnectedPieces pieces_;                   ///< the pieces the edges join
+  std::vector<double> unloaded_at_;       ///< per vertex: end of its piece's unloading [s]
+  std::vector<double> unloading_until_;   ///< per piece root, scratch [s]
+  std::vector<Eigen::Vector3d> box_min_;  ///< per piece root: lower corner of its box [m], scratch
+  std::vector<Eigen::Vector3d> box_max_;  ///< per piece root: upper corner of its box [m], scratch
+  ConnectedPieces pieces_;                ///< the pieces the edges join
   std::vector<std::int64_t> best_of_piece_;  ///< per root: most over-strained edge, or -1
   std::vector<double> best_ratio_;           ///< per root: its strain / breaking strain
   std::vector<std::uint32_t> collected_;
