@@ -74,8 +74,6 @@ void LengthConstraintProjection::chooseCorrectionDirections(
     return held_vertex_[v] != 0 && last_stiffness_[v] <= limit;
   };
   start_direction_.resize(edges.size());
-  start_at_a_.assign(edges.size(), 0);
-  start_at_b_.assign(edges.size(), 0);
   for (std::size_t e = 0; e < edges.size(); ++e) {
     if (!candidate_[e]) continue;
     const std::uint32_t a = edges.vertex_a[e];
@@ -87,6 +85,7 @@ void LengthConstraintProjection::chooseCorrectionDirections(
     if (start_direction_[e].dot(direction_[e]) < kStartDirectionCosine) continue;
     start_at_a_[e] = slow(a) ? 1 : 0;
     start_at_b_[e] = slow(b) ? 1 : 0;
+    any_start_direction_ = any_start_direction_ || start_at_a_[e] || start_at_b_[e];
   }
 }
 
@@ -265,6 +264,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
   }
   start_at_a_.assign(edges.size(), 0);
   start_at_b_.assign(edges.size(), 0);
+  any_start_direction_ = false;
   // Start directions (SHAKE) only without contacts: the contact rows' Newton steps solve the
   // symmetric system exactly, with final directions.
   if (step_start != nullptr && contacts == nullptr) chooseCorrectionDirections(*step_start, edges);
@@ -299,6 +299,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
       // where it started): finish on final directions, which always converge.
       std::fill(start_at_a_.begin(), start_at_a_.end(), 0);
       std::fill(start_at_b_.begin(), start_at_b_.end(), 0);
+      any_start_direction_ = false;
     }
     if (use_newton || result.iterations >= kFastIterations) {
       // The fast iterations stall (a light yarn swung hard by a heavy end): finish with Newton
@@ -312,7 +313,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
       iterate_ = position;
       newton_.apply(predicted_, inverse_mass_, edges, gram.incidence(), stretch_state_, candidate_,
                     newton_taut_, position, multiplier_, contacts,
-                    contacts == nullptr
+                    any_start_direction_
                         ? StartDirections{&start_direction_, &start_at_a_, &start_at_b_}
                         : StartDirections{});
       // With contacts, a Newton step is accepted only once it hardly moves anything: the

@@ -151,6 +151,9 @@ class LengthConstraintProjection {
   std::uint64_t held_signature_ = 0;              ///< intact edges and supports held_vertex_ is for
   std::vector<std::uint8_t> start_at_a_;  ///< edge moves its vertex a along start_direction_
   std::vector<std::uint8_t> start_at_b_;  ///< edge moves its vertex b along start_direction_
+  /// Some edge end takes its start direction in this projection (else the Newton steps need no
+  /// refinement on an unsymmetric system).
+  bool any_start_direction_ = false;
   /// Largest (omega dt)^2 [-] of a vertex corrected along start directions: the explicit
   /// treatment of its sideways mode is stable below 4 (Stormer-Verlet), kept well inside.
   static constexpr double kStartDirectionStiffness = 0.25;
