@@ -3,6 +3,7 @@
 #include <ros/console.h>
 #include <ros/time.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -18,31 +19,57 @@ namespace {
 
 constexpr double kWarnPeriod = 2.0;  ///< [s] between repeated warnings of one reason
 
+/// Throws InputRejected unless `value` [s] is finite and in [0, input_bounds::kMaxDuration].
+void requireDuration(double value, const char* what) {
+  if (!std::isfinite(value)) {
+    throw InputRejected(RefusalReason::kNotFinite, std::string(what) + " is not finite");
+  }
+  if (value < 0.0 || value > input_bounds::kMaxDuration) {
+    throw InputRejected(RefusalReason::kOutOfBounds,
+                        std::string(what) + " " + std::to_string(value) +
+                            " s is invalid (allowed: [0, 1e9] s, 0 = until replaced)");
+  }
+}
+
+/// The simulated time `span` [s] after `start` [s]; a zero span means never (infinity).
+double endAfter(double start, double span) {
+  return span > 0.0 ? start + span : std::numeric_limits<double>::infinity();
+}
+
 }  // namespace
 
 InputHandler::InputHandler(const FrameTransformer& frames)
     : frames_(frames),
       target_warnings_(kWarnPeriod, static_cast<std::size_t>(RefusalReason::kCount)) {}
 
+Eigen::Vector3d InputHandler::ActiveForce::at(double time) const {
+  const double elapsed =
+      std::clamp(std::min(time, ramp_end) - start, 0.0, input_bounds::kMaxDuration);
+  const Eigen::Vector3d value = force + elapsed * rate;
+  const double norm = value.norm();
+  return norm > input_bounds::kMaxForce ? Eigen::Vector3d(value * (input_bounds::kMaxForce / norm))
+                                        : value;
+}
+
 void InputHandler::handleAppliedForce(const AppliedForce& msg, Simulator& simulator) {
   requireBoundedVector(toEigen(msg.force), input_bounds::kMaxForce, "force", "N");
-  if (!std::isfinite(msg.duration)) {
-    throw InputRejected(RefusalReason::kNotFinite, "duration is not finite");
-  }
-  if (msg.duration < 0.0 || msg.duration > input_bounds::kMaxDuration) {
-    throw InputRejected(RefusalReason::kOutOfBounds,
-                        "duration " + std::to_string(msg.duration) +
-                            " s is invalid (allowed: [0, 1e9] s, 0 = until replaced)");
-  }
+  requireBoundedVector(toEigen(msg.force_rate), input_bounds::kMaxForceRate, "force_rate", "N/s");
+  requireDuration(msg.duration, "duration");
+  requireDuration(msg.ramp_duration, "ramp_duration");
   const std::uint32_t vertex = lookupVertex(simulator.scene(), msg.yarn, msg.vertex);
-  const Eigen::Vector3d fixed =
+  ActiveForce applied;
+  applied.force =
       frames_.rotateToFixedFrame(toEigen(msg.force), msg.header.frame_id, msg.header.stamp);
-  simulator.setAppliedForce(vertex, fixed);
-  if (fixed.isZero(0.0)) {
-    force_expiry_.erase(vertex);
+  applied.rate =
+      frames_.rotateToFixedFrame(toEigen(msg.force_rate), msg.header.frame_id, msg.header.stamp);
+  applied.start = simulator.time();
+  applied.ramp_end = endAfter(applied.start, msg.ramp_duration);
+  applied.expiry = endAfter(applied.start, msg.duration);
+  simulator.setAppliedForce(vertex, applied.force);
+  if (applied.force.isZero(0.0) && applied.rate.isZero(0.0)) {
+    forces_.erase(vertex);
   } else {
-    force_expiry_[vertex] = msg.duration > 0.0 ? simulator.time() + msg.duration
-                                               : std::numeric_limits<double>::infinity();
+    forces_[vertex] = applied;
   }
 }
 
@@ -113,11 +140,13 @@ void InputHandler::reportHeldTarget(GraspTarget& target, const InputRejected& e)
 }
 
 void InputHandler::beforeStep(Simulator& simulator, double fraction) {
-  for (auto it = force_expiry_.begin(); it != force_expiry_.end();) {
-    if (simulator.time() >= it->second) {
+  const double now = simulator.time();
+  for (auto it = forces_.begin(); it != forces_.end();) {
+    if (now >= it->second.expiry) {
       simulator.setAppliedForce(it->first, Eigen::Vector3d::Zero());
-      it = force_expiry_.erase(it);
+      it = forces_.erase(it);
     } else {
+      if (!it->second.rate.isZero(0.0)) simulator.setAppliedForce(it->first, it->second.at(now));
       ++it;
     }
   }
@@ -135,14 +164,14 @@ std::map<std::uint32_t, std::string> InputHandler::graspFrames() const {
 }
 
 void InputHandler::clear() {
-  force_expiry_.clear();
+  forces_.clear();
   grasps_.clear();
 }
 
 void InputHandler::forgetYarn(const Scene& scene, std::uint32_t yarn) {
   const auto of_yarn = [&](std::uint32_t vertex) { return scene.vertices.yarn[vertex] == yarn; };
-  for (auto it = force_expiry_.begin(); it != force_expiry_.end();) {
-    it = of_yarn(it->first) ? force_expiry_.erase(it) : std::next(it);
+  for (auto it = forces_.begin(); it != forces_.end();) {
+    it = of_yarn(it->first) ? forces_.erase(it) : std::next(it);
   }
   for (auto it = grasps_.begin(); it != grasps_.end();) {
     it = of_yarn(it->first) ? grasps_.erase(it) : std::next(it);

@@ -71,15 +71,17 @@ class FabricTest(unittest.TestCase):
         p = states.latest().fabrics[0].positions[corner]
         self.assertLess(math.dist((p.x, p.y, p.z), GRIP_AT), TOLERANCE)
 
-        # 30 N down on the last row's first vertex: its warp segment (warp yarn 0, segment
-        # picks - 2) carries it and tears; breaking force 3e8 Pa * pi (1e-4 m)^2 = 9.42 N.
+        # A force rising at 20 N/s down on the last row's first vertex: its warp segment (warp yarn
+        # 0, segment picks - 2) carries it and tears at the breaking force 3e8 Pa * pi (1e-4 m)^2 =
+        # 9.42 N. (A 30 N step on this 0.4 mg vertex tore one of several segments depending on
+        # the step it arrived in; issue 12 keeps that open.)
         force_pub = rospy.Publisher("applied_force", AppliedForce, queue_size=10)
         support.wait_until(lambda: force_pub.get_num_connections() > 0, 5.0)
         force = AppliedForce()
         force.header.stamp = rospy.Time.now()
         force.yarn, force.vertex = fabric["name"], (picks - 1) * ends
-        force.force.z = -30.0
-        force.duration = 0.2
+        force.force_rate.z = -20.0
+        force.ramp_duration = 1.0
         force_pub.publish(force)
         self.assertTrue(support.wait_until(lambda: breaks.latest() is not None, 10.0), "no tear")
         event = breaks.messages()[0]
@@ -88,7 +90,9 @@ class FabricTest(unittest.TestCase):
         self.assertEqual(event.family, BreakEvent.FAMILY_WARP)
         self.assertEqual((event.fabric_yarn, event.segment), (0, picks - 2))
         self.assertEqual((event.vertex_a, event.vertex_b), ((picks - 2) * ends, (picks - 1) * ends))
-        self.assertLessEqual(event.tension, 3.0e8 * math.pi * 1.0e-8 * (1.0 + 1e-9))
+        breaking_force = 3.0e8 * math.pi * 1.0e-8
+        self.assertLessEqual(event.tension, breaking_force * (1.0 + 1e-9))
+        self.assertGreater(event.tension, 0.98 * breaking_force)
         gripper.stop()
 
 

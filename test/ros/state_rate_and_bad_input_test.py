@@ -87,10 +87,12 @@ class StateRateAndBadInputTest(unittest.TestCase):
     def bad_messages(self):
         name = self.yarn["name"]
 
-        def force(yarn=name, vertex=-1, f=(0.0, 0.0, -1.0), frame="", duration=0.0):
+        def force(yarn=name, vertex=-1, f=(0.0, 0.0, -1.0), frame="", duration=0.0,
+                  rate=(0.0, 0.0, 0.0), ramp_duration=0.0):
             msg = AppliedForce()
             msg.header.frame_id = frame
             msg.yarn, msg.vertex, msg.force, msg.duration = yarn, vertex, Vector3(*f), duration
+            msg.force_rate, msg.ramp_duration = Vector3(*rate), ramp_duration
             return self.force_pub, msg
 
         def grasp(yarn=name, vertex=-1, frame="world", release=False):
@@ -103,6 +105,8 @@ class StateRateAndBadInputTest(unittest.TestCase):
             force(f=(nan, 0.0, 0.0)), force(f=(0.0, inf, 0.0)), force(f=(0.0, 0.0, -inf)),
             force(yarn="no_such_yarn"), force(vertex=999), force(vertex=-999),
             force(frame="no_such_frame"), force(duration=-1.0), force(duration=nan),
+            force(rate=(0.0, nan, 0.0)), force(rate=(0.0, 0.0, -1.0e12)),
+            force(ramp_duration=-1.0), force(ramp_duration=inf),
             grasp(yarn="no_such_yarn"), grasp(vertex=999), grasp(frame="no_such_frame"),
             grasp(frame=""), grasp(vertex=3, release=True),
         ]

@@ -13,7 +13,8 @@ namespace input_bounds {
 
 constexpr double kMaxForce = 1.0e6;         ///< |applied force| [N]
 constexpr double kMaxDistance = 1.0e4;      ///< distance of a grasp target from the origin [m]
-constexpr double kMaxDuration = 1.0e9;      ///< applied force duration [s]
+constexpr double kMaxDuration = 1.0e9;      ///< applied force duration and ramp duration [s]
+constexpr double kMaxForceRate = 1.0e9;     ///< |applied force rate| [N/s]
 constexpr std::size_t kMaxFrameName = 256;  ///< tf frame name [characters]
 
 }  // namespace input_bounds

@@ -19,17 +19,20 @@ namespace ros_layer {
 /// handed to the simulator at the right steps.
 ///
 /// Forces act until replaced for the same vertex, or for `duration` simulated seconds when > 0; a
-/// zero force clears. A grasped vertex is kinematic and follows the origin of its target frame,
-/// looked up once per stepping cycle and interpolated linearly over the cycle's steps. Forces and
-/// targets past input_bounds.hpp are refused, so a step never sees one.
+/// zero force with a zero rate clears. A force with a `force_rate` changes at that rate in
+/// simulated time (for `ramp_duration` when > 0, then stays), evaluated before each step, its
+/// magnitude capped at input_bounds::kMaxForce. A grasped vertex is kinematic and follows the
+/// origin of its target frame, looked up once per stepping cycle and interpolated linearly over the
+/// cycle's steps. Forces and targets past input_bounds.hpp are refused, so a step never sees one.
 class InputHandler {
  public:
   /// `frames` must outlive this object.
   explicit InputHandler(const FrameTransformer& frames);
 
   /// Applies an applied_force message; throws InputRejected (non-finite values, a force past
-  /// input_bounds::kMaxForce, unknown yarn, vertex out of range, a duration outside [0, 1e9] s,
-  /// unresolvable or stale frame), leaving everything unchanged.
+  /// input_bounds::kMaxForce or a rate past kMaxForceRate, unknown yarn, vertex out of range, a
+  /// duration or ramp duration outside [0, 1e9] s, unresolvable or stale frame), leaving
+  /// everything unchanged.
   void handleAppliedForce(const AppliedForce& msg, Simulator& simulator);
   /// Grasps or releases a vertex; throws InputRejected (unknown yarn or vertex, empty or
   /// unresolvable or stale target frame, or one past input_bounds::kMaxDistance; releasing a
@@ -40,8 +43,9 @@ class InputHandler {
   /// a stale frame (not updated for frame_timeout) is reported once per grasp until it is updated
   /// again, other failures are warned throttled per reason.
   void beginCycle();
-  /// Before each step: clears lapsed forces and moves grasped vertices `fraction` (0..1] of the way
-  /// from the previous cycle's target to this cycle's.
+  /// Before each step: clears lapsed forces, sets ramped forces to their value at the step's start
+  /// and moves grasped vertices `fraction` (0..1] of the way from the previous cycle's target to
+  /// this cycle's.
   void beforeStep(Simulator& simulator, double fraction);
 
   /// Forgets all forces and grasps (the simulator has been reset).
@@ -49,12 +53,24 @@ class InputHandler {
   /// Forgets the forces and grasps on the vertices of yarn `yarn` (restored by the simulator).
   void forgetYarn(const Scene& scene, std::uint32_t yarn);
 
-  std::size_t activeForces() const { return force_expiry_.size(); }
+  std::size_t activeForces() const { return forces_.size(); }
   std::size_t activeGrasps() const { return grasps_.size(); }
   /// Grasped global vertex ids and the tf frame each follows.
   std::map<std::uint32_t, std::string> graspFrames() const;
 
  private:
+  /// A force acting on one vertex, in the fixed frame.
+  struct ActiveForce {
+    Eigen::Vector3d force;  ///< force at `start` [N]
+    Eigen::Vector3d rate;   ///< change per simulated second [N/s]
+    double start = 0.0;     ///< simulated time the message was applied [s]
+    double ramp_end = 0.0;  ///< simulated time the force stops changing [s] (inf)
+    double expiry = 0.0;    ///< simulated time the force lapses [s] (inf)
+
+    /// Force at simulated time `time` [s] [N], capped at input_bounds::kMaxForce.
+    Eigen::Vector3d at(double time) const;
+  };
+
   struct GraspTarget {
     std::string frame;     ///< tf frame whose origin the vertex follows
     std::string label;     ///< "vertex <i> of yarn '<name>'", for warnings
@@ -68,9 +84,9 @@ class InputHandler {
   void reportHeldTarget(GraspTarget& target, const InputRejected& e);
 
   const FrameTransformer& frames_;
-  std::map<std::uint32_t, double> force_expiry_;  ///< vertex -> simulated expiry time [s] (inf)
-  std::map<std::uint32_t, GraspTarget> grasps_;   ///< vertex -> holder
-  WarningThrottle target_warnings_;               ///< per RefusalReason
+  std::map<std::uint32_t, ActiveForce> forces_;  ///< vertex -> its force
+  std::map<std::uint32_t, GraspTarget> grasps_;  ///< vertex -> holder
+  WarningThrottle target_warnings_;              ///< per RefusalReason
 };
 
 }  // namespace ros_layer
