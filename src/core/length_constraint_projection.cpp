@@ -46,6 +46,18 @@ void LengthConstraintProjection::holdEdgesBetweenSupports(
   }
 }
 
+bool LengthConstraintProjection::newtonFirst(std::size_t num_edges) {
+  if (!newton_first_next_ || last_multiplier_.size() != num_edges) return false;
+  // (omega dt)^2 and the multipliers (forces times dt^2) scale with dt^2: rescaled for a step of
+  // another length (recoil substeps).
+  const double scale = time_step2_ / last_time_step2_;
+  const bool stiff = std::any_of(last_stiffness_.begin(), last_stiffness_.end(),
+                                 [scale](double stiffness) { return scale * stiffness > 1.0; });
+  if (!stiff) return false;
+  for (std::size_t e = 0; e < num_edges; ++e) multiplier_[e] = scale * last_multiplier_[e];
+  return true;
+}
+
 void LengthConstraintProjection::computeSidewaysStiffness(const EdgeSet& edges) {
   // (omega dt)^2 = w_v sum_e m_e / l_e (m_e = T_e dt^2): a vertex on taut edges, pulled sideways,
   // is pulled back with stiffness sum_e T_e / l_e.
@@ -256,6 +268,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
     }
     if (last_multiplier_.size() == multiplier_.size()) multiplier_ = last_multiplier_;
   }
+  const bool newton_first = contacts == nullptr && newtonFirst(edges.size());
   ProjectionResult result;
   result.max_violation = evaluate(position, edges);
   if (contacts != nullptr) {
@@ -272,13 +285,15 @@ ProjectionResult LengthConstraintProjection::projectFast(
   was_taut_.resize(edges.size(), 0);
   for (std::size_t e = 0; e < edges.size(); ++e) active_[e] |= candidate_[e] & was_taut_[e];
   bool use_newton = false;
+  bool fast_iterations_stalled = false;
   for (;;) {
     // With contacts the iterations start at the step's start, which is not the answer.
     result.converged =
         result.max_violation <= parameters.constraint_tolerance &&
         result.max_penetration <= parameters.constraint_tolerance &&
         (contacts == nullptr || (result.iterations > 0 && !newton_.frictionChanged() &&
-                                 last_move_ <= parameters.constraint_tolerance));
+                                 last_move_ <= parameters.constraint_tolerance)) &&
+        (!newton_first || result.iterations > 0);
     if (result.converged) {
       // Held to their limits, but do the constraint forces act along the final edge directions?
       // Where they act along the directions the iterations started from, a light vertex on a
@@ -293,7 +308,8 @@ ProjectionResult LengthConstraintProjection::projectFast(
     // With contacts, the fast iterations first bring the edges near their limits (a pulled end
     // may be predicted metres away, too far for Newton steps to start from); then Newton steps
     // settle the edges and the contacts together.
-    use_newton = use_newton || contacts != nullptr;
+    use_newton = use_newton || contacts != nullptr || newton_first;
+    if (!use_newton && result.iterations >= kFastIterations) fast_iterations_stalled = true;
     if (result.iterations == kStartDirectionIterations) {
       // Not converged with start directions (a step that tears or jerks the piece far from
       // where it started): finish on final directions, which always converge.
@@ -360,6 +376,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
   if (!result.converged) computeSidewaysStiffness(edges);  // else forceMismatch's is current
   last_stiffness_.swap(sideways_stiffness_);
   last_time_step2_ = time_step2_;
+  newton_first_next_ = newton_first || fast_iterations_stalled;
   return result;
 }
 

@@ -22,9 +22,14 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
                             const std::vector<double>& multiplier, const ContactSet* contacts) {
   // Rows in vertex order, each taut edge's row right after its later vertex's: a chain's system
   // is then banded, and the natural ordering factorizes it in O(N) without fill.
+  // On other graphs every movable edge has a row, a slack one an idle row (m_e = 0, its
+  // couplings stored as zeros): the pattern then holds while the taut set changes, and the
+  // factorization's symbolic analysis is kept (PatternCachedLdlt).
   const std::size_t n = position.size();
+  const bool fixed_pattern = !banded_;
   vertex_row_.assign(n, -1);
   edge_row_.assign(edges.size(), -1);
+  idle_row_.assign(edges.size(), -1);
   int rows = 0;
   for (std::size_t v = 0; v < n; ++v) {
     if (inverse_mass[v] > 0.0) {
@@ -33,7 +38,12 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     }
     for (const std::uint32_t* it = incidence.begin(v); it != incidence.end(v); ++it) {
       const std::uint32_t e = *it;
-      if (taut[e] && std::max(edges.vertex_a[e], edges.vertex_b[e]) == v) edge_row_[e] = rows++;
+      if (std::max(edges.vertex_a[e], edges.vertex_b[e]) != v) continue;
+      if (taut[e]) {
+        edge_row_[e] = rows++;
+      } else if (fixed_pattern && (*movable_)[e]) {
+        idle_row_[e] = rows++;
+      }
     }
     if (contacts == nullptr) continue;
     for (std::uint32_t k = contact_start_[v]; k < contact_start_[v + 1]; ++k) {
@@ -55,10 +65,15 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     const int r = vertex_row_[v];
     if (r < 0) continue;
     const double mass = 1.0 / inverse_mass[v];
+    if (fixed_pattern) addBlock(triplets_, r, r, Eigen::Matrix3d::Zero());
     for (int i = 0; i < 3; ++i) triplets_.emplace_back(r + i, r + i, mass);
     rhs_.segment<3>(r) = -mass * (position[v] - predicted[v]);
   }
   for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (idle_row_[e] >= 0) {
+      addIdleRow(e, edges);
+      continue;
+    }
     if (edge_row_[e] < 0) continue;
     const int ra = vertex_row_[edges.vertex_a[e]];
     const int rb = vertex_row_[edges.vertex_b[e]];
@@ -173,6 +188,25 @@ void StiffNewtonStep::exactResidual(const EdgeSet& edges,
   }
 }
 
+void StiffNewtonStep::addIdleRow(std::size_t e, const EdgeSet& edges) {
+  const int ra = vertex_row_[edges.vertex_a[e]];
+  const int rb = vertex_row_[edges.vertex_b[e]];
+  const int re = idle_row_[e];
+  // The entries a taut edge would fill, as zeros; -1 m_e = 0 on the diagonal.
+  if (ra >= 0 && rb >= 0) {
+    addBlock(triplets_, ra, rb, Eigen::Matrix3d::Zero());
+    addBlock(triplets_, rb, ra, Eigen::Matrix3d::Zero());
+  }
+  for (const int r : {ra, rb}) {
+    if (r < 0) continue;
+    for (int i = 0; i < 3; ++i) {
+      triplets_.emplace_back(re, r + i, 0.0);
+      triplets_.emplace_back(r + i, re, 0.0);
+    }
+  }
+  triplets_.emplace_back(re, re, -1.0);
+}
+
 double StiffNewtonStep::linearizedStretch(const EdgeSet& edges,
                                           const EdgeStretchState& stretch_state, std::size_t e,
                                           const std::vector<Eigen::Vector3d>& position) const {
@@ -195,6 +229,7 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
                             std::vector<double>& multiplier, ContactSet* contacts,
                             const StartDirections& start) {
   start_ = start;
+  movable_ = &movable;
   for (std::size_t e = 0; e < edges.size(); ++e) taut[e] = taut[e] & movable[e];
   friction_changed_ = false;
   if (contacts != nullptr) sortContacts(*contacts, position.size());

@@ -68,6 +68,8 @@ class StiffNewtonStep {
   void exactResidual(const EdgeSet& edges, const std::vector<Eigen::Vector3d>& position,
                      const std::vector<double>& inverse_mass, const std::vector<double>& multiplier,
                      const EdgeStretchState& stretch_state);
+  /// Adds slack edge e's idle row (idle_row_): m_e = 0, its couplings stored as zeros.
+  void addIdleRow(std::size_t e, const EdgeSet& edges);
   /// Solves the assembled symmetric system for `rhs`, into `result`.
   bool solveAssembled(const Eigen::VectorXd& rhs, Eigen::VectorXd& result);
   /// Assembles and solves the system for the current `taut` set into solution_.
@@ -124,6 +126,8 @@ class StiffNewtonStep {
   Eigen::VectorXd response_;       ///< scratch of pointResponse
   std::vector<int> vertex_row_;    ///< first row of each free vertex, -1 for supports
   std::vector<int> edge_row_;      ///< row of each taut edge, -1 otherwise
+  std::vector<int> idle_row_;      ///< row of each slack movable edge (not banded), -1 otherwise
+  const std::vector<std::uint8_t>* movable_ = nullptr;  ///< the movable edges of this apply
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> matrix_;
   Eigen::VectorXd rhs_;
