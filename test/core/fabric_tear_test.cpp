@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "fabric_support.hpp"
+#include "yarn_tearing/core/trouser_tear.hpp"
 
 namespace yarn_tearing::test {
 namespace {
@@ -20,32 +21,12 @@ struct TrouserRun {
   int unconverged_steps = 0;
 };
 
-/// `ends` x `picks` patch held along its first row, a slit of `slit_rows` rows cut up its middle
-/// from the last row; the last row's two halves (the tongues) drawn apart along the weft at
-/// `speed` [m/s] each for `duration` [s].
+/// runTrouserTear with the stability records of every step.
 TrouserRun trouserTear(const SimulationParameters& p, const FabricSpec& spec, int slit_rows,
                        double speed, double duration) {
-  FabricSpec cut = spec;
-  const int middle = spec.ends / 2 - 1;  // the weft segment between the tongues
-  cut.slits = {{FabricFamily::kWeft, spec.picks - slit_rows, spec.picks - 1, middle}};
-  Simulator sim(p, {}, {cut});
-  const Scene& scene = sim.scene();
-  std::vector<std::uint32_t> grip;
-  std::vector<Eigen::Vector3d> start;
-  std::vector<double> side;
-  for (int c = 0; c < spec.ends; ++c) {
-    grip.push_back(scene.fabricVertex(0, -1, c));
-    start.push_back(scene.vertices.position[grip.back()]);
-    side.push_back(c <= middle ? -1.0 : 1.0);
-  }
   TrouserRun run;
-  const int steps = static_cast<int>(std::lround(duration / p.time_step));
-  const Eigen::Vector3d weft = spec.weft_direction.normalized();
-  for (int i = 1; i <= steps; ++i) {
-    for (std::size_t k = 0; k < grip.size(); ++k) {
-      sim.setKinematicTarget(grip[k], start[k] + side[k] * speed * i * p.time_step * weft);
-    }
-    sim.step();
+  const auto observe = [&run](const Simulator& sim) {
+    const Scene& scene = sim.scene();
     if (!sim.lastHealth().projection_converged) ++run.unconverged_steps;
     for (const Eigen::Vector3d& v : scene.vertices.velocity) {
       run.max_speed = std::max(run.max_speed, v.norm());
@@ -59,8 +40,8 @@ TrouserRun trouserTear(const SimulationParameters& p, const FabricSpec& spec, in
       const double breaking = scene.yarns[scene.edges.yarn[e]].material.curve.breakingStrain();
       run.max_overstrain = std::max(run.max_overstrain, strain / breaking);
     }
-    for (const TearEvent& e : sim.takeTearEvents()) run.events.push_back(e);
-  }
+  };
+  run.events = runTrouserTear(p, spec, {slit_rows, speed, duration}, observe).events;
   return run;
 }
 
