@@ -94,8 +94,10 @@ class LengthConstraintProjection {
   const Eigen::Vector3d& correctionDirection(std::size_t e, bool end_b) const {
     return (end_b ? start_at_b_[e] : start_at_a_[e]) ? start_direction_[e] : direction_[e];
   }
-  /// True when this projection starts with Newton steps (newton_first_next_), its multipliers
-  /// then warm-started from the last projection's.
+  /// True when this projection starts with Newton steps: newton_first_next_ and some vertex
+  /// stiffer sideways at the end of the last projection, rescaled to this step's dt^2, than the
+  /// fast iterations treat stably ((omega dt)^2 > 1). Then warm-starts the multipliers from the
+  /// last projection's (rescaled by dt^2).
   bool newtonFirst(std::size_t num_edges);
   /// Sets held_vertex_ (regrouping the pieces only when edges or supports changed).
   void updateHeldVertices(const EdgeSet& edges);
@@ -168,11 +170,10 @@ class LengthConstraintProjection {
   static constexpr double kStartDirectionCosine = 0.99;
   double slack_tolerance_ = 0.0;  ///< relative stretch a slack edge may show before it joins
   static constexpr int kMaxPivotingPasses = 30;  ///< active-set passes per iteration
-  /// The last projection's fast iterations stalled (or it started with Newton steps) and some
-  /// vertex ended stiffer sideways than they treat stably ((omega dt)^2 > 1): the next one
-  /// starts with Newton steps from the warm multipliers rather than let the fast iterations fling
-  /// the light vertices first (a fabric drawn taut: moves of 100 edge lengths, then 20 Newton
-  /// steps to come back).
+  /// The last projection's fast iterations stalled (or it started with Newton steps): while the
+  /// piece stays stiff sideways, the next one starts with Newton steps from the warm multipliers
+  /// rather than let the fast iterations fling the light vertices first (a fabric drawn taut:
+  /// moves of 100 edge lengths, then 20 Newton steps to come back). See newtonFirst().
   bool newton_first_next_ = false;
 };
 
