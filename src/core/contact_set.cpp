@@ -9,6 +9,10 @@ namespace {
 /// Segment points this close to an end are left to that end's vertex contact [-].
 constexpr double kEndFraction = 0.02;
 
+/// Smallest curvature along a segment, relative to the surface's mean curvature, for which its
+/// closest point is well defined [-].
+constexpr double kFlatTurn = 1e-2;
+
 /// A unit vector orthogonal to unit `n`.
 Eigen::Vector3d orthogonal(const Eigen::Vector3d& n) {
   const Eigen::Vector3d helper =
@@ -116,15 +120,13 @@ double ContactSet::distance(const Contact& c, const Eigen::Vector3d& p,
 
 void ContactSet::linearize(const std::vector<Eigen::Vector3d>& x) {
   for (Contact& c : contacts_) {
-    // A pushing point keeps its parameter t through the projection: moving it with the
-    // iterate would add its own derivative to the Hessian, which the Newton steps leave out,
-    // and they would then creep instead of converging. A point that does not push follows the
-    // closest point, so that it is taken in where the segment really touches. On a box, where
-    // the closest point may leave the segment's inside for a vertex, it is always followed
-    // (and handed to that vertex's contact).
+    // A segment point follows the segment's closest point at every iterate, so that its row is
+    // the gradient of the segment's own distance (the Newton steps add the curvature that
+    // moving t gives, closestPointTurn). On a box, where the closest point may leave the
+    // segment's inside for a vertex, it is handed to that vertex's contact there.
     bool at_end = false;
     const bool box = (*obstacles_)[c.obstacle].shape == ObstacleShape::kBox;
-    if (c.a != c.b && (box || !c.active)) {
+    if (c.a != c.b) {
       const double t = (*obstacles_)[c.obstacle].closestOnSegment(x[c.a], x[c.b]);
       if (box) {
         at_end = t <= kEndFraction || t >= 1.0 - kEndFraction;
@@ -150,6 +152,20 @@ void ContactSet::linearize(const std::vector<Eigen::Vector3d>& x) {
                        : orthogonal(c.normal);
     c.tangent[1] = c.normal.cross(c.tangent[0]);
   }
+}
+
+bool ContactSet::closestPointTurn(const Contact& c, const std::vector<Eigen::Vector3d>& x,
+                                  Eigen::Matrix<double, 6, 1>& derivative, double& second) const {
+  if (c.a == c.b || !(c.t > 0.0 && c.t < 1.0)) return false;
+  if ((*obstacles_)[c.obstacle].shape == ObstacleShape::kBox) return false;
+  const Eigen::Vector3d e = x[c.b] - x[c.a];
+  const Eigen::Matrix3d h = curvature(c, x);
+  second = e.dot(h * e);
+  // Along the surface's flat direction (a segment along a capsule's axis) t is not defined.
+  if (!(second > kFlatTurn * e.squaredNorm() * h.trace())) return false;
+  derivative.head<3>() = (1.0 - c.t) * (h * e) - c.normal;
+  derivative.tail<3>() = c.t * (h * e) + c.normal;
+  return true;
 }
 
 double ContactSet::maxPenetration() const {

@@ -288,12 +288,12 @@ ProjectionResult LengthConstraintProjection::projectFast(
   bool fast_iterations_stalled = false;
   for (;;) {
     // With contacts the iterations start at the step's start, which is not the answer.
-    result.converged =
-        result.max_violation <= parameters.constraint_tolerance &&
-        result.max_penetration <= parameters.constraint_tolerance &&
-        (contacts == nullptr || (result.iterations > 0 && !newton_.frictionChanged() &&
-                                 last_move_ <= parameters.constraint_tolerance)) &&
-        (!newton_first || result.iterations > 0);
+    result.converged = result.max_violation <= parameters.constraint_tolerance &&
+                       result.max_penetration <= parameters.constraint_tolerance &&
+                       (contacts == nullptr ||
+                        (result.iterations > 0 && newton_.impulseChange() <= kImpulseTolerance &&
+                         last_move_ <= parameters.constraint_tolerance)) &&
+                       (!newton_first || result.iterations > 0);
     if (result.converged) {
       // Held to their limits, but do the constraint forces act along the final edge directions?
       // Where they act along the directions the iterations started from, a light vertex on a

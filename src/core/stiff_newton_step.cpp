@@ -55,7 +55,7 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
       friction_row_[i] = -1;
       if (normal_row_[i] >= 0 && c.friction > 0.0 && !c.sliding) {
         friction_row_[i] = rows;
-        rows += c.frictionDirections();
+        rows += Contact::kFrictionDirections;
       }
     }
   }
@@ -231,7 +231,7 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
   start_ = start;
   movable_ = &movable;
   for (std::size_t e = 0; e < edges.size(); ++e) taut[e] = taut[e] & movable[e];
-  friction_changed_ = false;
+  if (contacts != nullptr) rememberImpulses(*contacts);
   if (contacts != nullptr) sortContacts(*contacts, position.size());
   banded_ = true;
   for (std::size_t e = 0; e < edges.size() && banded_; ++e) {
@@ -282,11 +282,12 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
     frontier_.grow(edges, incidence, movable, stretch_, taut);
   }
   if (contacts != nullptr) {
-    storeContactImpulses(*contacts);
     // Friction states change between Newton steps only, once the taut edges and touching points
     // have settled on this linearization: the bound comes from the normal multipliers, and
     // switching inside the pivoting on passes whose normal forces are still wrong cycles.
-    friction_changed_ = pivotContacts(*contacts, inverse_mass, position, true);
+    storeContactImpulses(*contacts);
+    measureImpulseChange(*contacts, inverse_mass);
+    pivotContacts(*contacts, inverse_mass, position, true);
   }
   for (std::size_t v = 0; v < position.size(); ++v) {
     if (vertex_row_[v] >= 0) position[v] += solution_.segment<3>(vertex_row_[v]);
@@ -334,11 +335,27 @@ void StiffNewtonStep::addContactRows(const ContactSet& contacts,
           addBlock(triplets_, ra, rb, wa * wb * h);
           addBlock(triplets_, rb, ra, wa * wb * h);
         }
+        // The closest point moving along a turning segment: -m_n times the Hessian's second
+        // part (ContactSet::closestPointTurn). Without it a segment pivoting about a point it
+        // keeps on the surface looks free, cuts into the solid, and is pushed out one step late:
+        // a wrap gained energy at every step.
+        Eigen::Matrix<double, 6, 1> turn;
+        double second = 0.0;
+        if (contacts.closestPointTurn(c, position, turn, second)) {
+          const Eigen::Matrix<double, 6, 6> g =
+              (c.normal_multiplier / second) * turn * turn.transpose();
+          if (ra >= 0) addBlock(triplets_, ra, ra, g.topLeftCorner<3, 3>());
+          if (rb >= 0) addBlock(triplets_, rb, rb, g.bottomRightCorner<3, 3>());
+          if (ra >= 0 && rb >= 0) {
+            addBlock(triplets_, ra, rb, g.topRightCorner<3, 3>());
+            addBlock(triplets_, rb, ra, g.bottomLeftCorner<3, 3>());
+          }
+        }
       }
     }
     if (friction_row_[i] >= 0) {
       const Eigen::Vector3d slip = c.point(position) - c.anchor();
-      for (int k = 0; k < c.frictionDirections(); ++k) {
+      for (int k = 0; k < Contact::kFrictionDirections; ++k) {
         row(friction_row_[i] + k, c.tangent[k], c.tangent[k].dot(slip));
       }
     }
@@ -365,22 +382,10 @@ void StiffNewtonStep::sortContacts(const ContactSet& contacts, std::size_t num_v
 
 Eigen::Vector3d StiffNewtonStep::frictionImpulse(const Contact& c, int row) const {
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
-  for (int k = 0; k < c.frictionDirections(); ++k) impulse += solution_[row + k] * c.tangent[k];
+  for (int k = 0; k < Contact::kFrictionDirections; ++k) {
+    impulse += solution_[row + k] * c.tangent[k];
+  }
   return impulse;
-}
-
-Eigen::Vector3d StiffNewtonStep::pointResponse(const Contact& c, const Eigen::Vector3d& direction) {
-  response_.setZero(rhs_.size());
-  const int ra = vertex_row_[c.a];
-  const int rb = vertex_row_[c.b];
-  if (ra >= 0) response_.segment<3>(ra) = (1.0 - c.t) * direction;
-  if (rb >= 0) response_.segment<3>(rb) += c.t * direction;
-  response_ = banded_ ? Eigen::VectorXd(banded_factorization_.ldlt.solve(response_))
-                      : general_factorization_.solve(response_);
-  Eigen::Vector3d move = Eigen::Vector3d::Zero();
-  if (ra >= 0) move += (1.0 - c.t) * response_.segment<3>(ra);
-  if (rb >= 0) move += c.t * response_.segment<3>(rb);
-  return move;
 }
 
 Eigen::Vector3d StiffNewtonStep::pointMove(const Contact& c) const {
@@ -422,10 +427,6 @@ bool StiffNewtonStep::pivotContacts(ContactSet& contacts, const std::vector<doub
     }
     if (!(c.friction > 0.0)) continue;
     const double bound = c.friction * std::max(normal, 0.0);
-    if (c.frictionDirections() == 0) {
-      if (pivotSegmentFriction(c, bound, negligible, move, position, friction)) changed = true;
-      continue;
-    }
     if (!friction) {
       // A sliding point's friction is mu times its normal force of this very solve: re-solved
       // until the two agree (the direction is settled between Newton steps).
@@ -441,6 +442,7 @@ bool StiffNewtonStep::pivotContacts(ContactSet& contacts, const std::vector<doub
       const Eigen::Vector3d held = frictionImpulse(c, friction_row_[i]);
       if (held.norm() > bound * (1.0 + kFrictionMargin) + negligible) {
         c.sliding = true;
+        ++c.slide_starts;
         c.friction_impulse = bound * held.normalized();
         changed = true;
       }
@@ -449,10 +451,13 @@ bool StiffNewtonStep::pivotContacts(ContactSet& contacts, const std::vector<doub
     // Sliding: friction opposes the slip of the point from where it stuck.
     Eigen::Vector3d slip = c.point(position) + move - c.anchor();
     slip -= c.normal.dot(slip) * c.normal;
-    if (c.frictionDirections() == 1) slip = c.tangent[0].dot(slip) * c.tangent[0];
-    if (!(slip.norm() > kSlackTolerance * c.scale) || slip.dot(c.friction_impulse) >= 0.0) {
-      c.sliding = false;  // the slip turned round: it sticks
-      c.friction_impulse.setZero();
+    const bool slipping = slip.norm() > kSlackTolerance * c.scale;
+    // A point that has started to slide too often in this step slides on, its friction at the
+    // bound in its last direction (see kMaxSlideStarts).
+    if (c.slide_starts >= kMaxSlideStarts) continue;
+    if (!slipping || slip.dot(c.friction_impulse) >= 0.0) {
+      // The slip turned round or stopped: it sticks (its rows take over the impulse).
+      c.sliding = false;
       changed = true;
       continue;
     }
@@ -465,29 +470,24 @@ bool StiffNewtonStep::pivotContacts(ContactSet& contacts, const std::vector<doub
   return changed;
 }
 
-bool StiffNewtonStep::pivotSegmentFriction(Contact& c, double bound, double negligible,
-                                           const Eigen::Vector3d& move,
-                                           const std::vector<Eigen::Vector3d>& position,
-                                           bool between_steps) {
-  Eigen::Vector3d impulse = c.friction_impulse;
-  if (between_steps) {
-    // The impulse that would hold the point where it stuck, by the point's own response to an
-    // impulse along its slip (one more solve with the factorization at hand), kept in the cone.
-    Eigen::Vector3d slip = c.point(position) + move - c.anchor();
-    slip -= c.normal.dot(slip) * c.normal;
-    const double length = slip.norm();
-    if (length > kSlackTolerance * c.scale) {
-      const Eigen::Vector3d direction = slip / length;
-      const double response = direction.dot(pointResponse(c, direction));
-      if (response > 0.0) impulse -= (length / response) * direction;
-    }
+void StiffNewtonStep::rememberImpulses(const ContactSet& contacts) {
+  previous_impulse_.clear();
+  for (const Contact& c : contacts.contacts()) previous_impulse_.push_back(c.impulse());
+}
+
+void StiffNewtonStep::measureImpulseChange(const ContactSet& contacts,
+                                           const std::vector<double>& inverse_mass) {
+  impulse_change_ = 0.0;
+  const std::vector<Contact>& list = contacts.contacts();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const Contact& c = list[i];
+    // Relative to the impulse, or to the one that would move the free point by its length scale
+    // where that is larger (a point barely touching).
+    const double mobility = c.mobility(inverse_mass);
+    if (!(mobility > 0.0)) continue;
+    const double size = std::max(c.impulse().norm(), c.scale / mobility);
+    impulse_change_ = std::max(impulse_change_, (c.impulse() - previous_impulse_[i]).norm() / size);
   }
-  const double magnitude = impulse.norm();
-  if (magnitude > bound) impulse *= bound / magnitude;
-  if ((impulse - c.friction_impulse).norm() <= kFrictionTolerance * bound + negligible)
-    return false;
-  c.friction_impulse = impulse;
-  return true;
 }
 
 void StiffNewtonStep::storeContactImpulses(ContactSet& contacts) const {

@@ -15,11 +15,11 @@ namespace yarn_tearing {
 /// in the projection are of the length constraints' form (C(x) <= 0 or = 0, a multiplier m
 /// [kg m] = force dt^2, the vertices moved by -W grad C m):
 ///   normal:   C_n = -(distance(p) - r) <= 0,  m_n >= 0 (pushes out, never pulls);
-///   friction at a vertex: C_k = -tau_k . (p - anchor) = 0 for two tangents tau_k while it sticks
+///   friction: C_k = -tau_k . (p - anchor) = 0 for two tangents tau_k while it sticks
 ///             (|m_t| <= mu m_n); once |m_t| would exceed mu m_n it slides, and friction is the
-///             known impulse mu m_n against the slip (Coulomb: static = kinetic);
-///   friction at a segment point: a known impulse in the cone |f| <= mu m_n, moved between
-///             Newton steps to the one that holds the point where it stuck (StiffNewtonStep).
+///             known impulse mu m_n against the slip (Coulomb: static = kinetic). The same rows
+///             at a vertex and at a segment point (a known impulse moved between Newton steps
+///             to the one that holds each segment point, all at once, diverged on a wrap).
 struct Contact {
   std::uint32_t a = 0;         ///< first vertex (global id)
   std::uint32_t b = 0;         ///< second vertex (= a for a vertex contact)
@@ -43,6 +43,7 @@ struct Contact {
   /// False while a segment point sits at the segment's end, where its vertex's contact is.
   bool enabled = true;
   bool sliding = false;            ///< friction is the known sliding impulse
+  int slide_starts = 0;            ///< how often it started to slide in this step
   double normal_multiplier = 0.0;  ///< m_n [kg m]
   Eigen::Vector3d friction_impulse = Eigen::Vector3d::Zero();  ///< on the yarn [kg m]
 
@@ -50,9 +51,8 @@ struct Contact {
   Eigen::Vector3d point(const std::vector<Eigen::Vector3d>& x) const {
     return (1.0 - t) * x[a] + t * x[b];
   }
-  /// Friction rows while it sticks: 2 at a vertex; none at a segment point, whose friction is a
-  /// known impulse (pinning every stuck point of a wrap by rows made the Newton steps diverge).
-  int frictionDirections() const { return a == b ? 2 : 0; }
+  /// Friction rows while it sticks (two tangents).
+  static constexpr int kFrictionDirections = 2;
   /// How far the point moves per unit impulse on it [1/kg]: (1 - t)^2 w_a + t^2 w_b.
   double mobility(const std::vector<double>& inverse_mass) const {
     return (1.0 - t) * (1.0 - t) * inverse_mass[a] + t * t * inverse_mass[b];
@@ -88,6 +88,15 @@ class ContactSet {
   Eigen::Matrix3d curvature(const Contact& c, const std::vector<Eigen::Vector3d>& x) const {
     return (*obstacles_)[c.obstacle].curvature(c.point(x));
   }
+  /// For a segment point inside its segment on a round solid, where the closest point moves
+  /// along the segment as the segment turns: the segment's distance d(x_a, x_b) = min over t of
+  /// distance((1 - t) x_a + t x_b) has the Hessian
+  ///   Hess(distance at fixed t) - derivative derivative^T / second,
+  /// with `derivative` = d/dt of the gradient on (x_a, x_b) [-, 1/m] (6 entries) and `second` =
+  /// d^2 distance / dt^2 [m]. False where t does not move (a vertex, a segment's end, a box, a
+  /// segment along a capsule's axis).
+  bool closestPointTurn(const Contact& c, const std::vector<Eigen::Vector3d>& x,
+                        Eigen::Matrix<double, 6, 1>& derivative, double& second) const;
   /// Largest penetration, relative to each contact's length scale [-] (0 if none).
   double maxPenetration() const;
   /// Adds `factor` w_v times each contact's impulse share to `sum` per vertex.

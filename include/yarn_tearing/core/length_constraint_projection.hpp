@@ -168,6 +168,12 @@ class LengthConstraintProjection {
   /// to be used (an edge that turned further, e.g. a whipping slack end, is corrected along
   /// its current direction).
   static constexpr double kStartDirectionCosine = 0.99;
+  /// Relative change of the contact impulses in the last Newton step below which they have
+  /// settled [-] (StiffNewtonStep::impulseChange()). Looser than the constraint tolerance: a
+  /// stuck wrap's friction rows are nearly dependent (the points' moves are well determined,
+  /// the share of the impulses between them only through the yarn's compliance), and their
+  /// round-off alone moves the impulses by 1e-5.
+  static constexpr double kImpulseTolerance = 1e-4;
   double slack_tolerance_ = 0.0;  ///< relative stretch a slack edge may show before it joins
   static constexpr int kMaxPivotingPasses = 30;  ///< active-set passes per iteration
   /// The last projection's fast iterations stalled (or it started with Newton steps): while the

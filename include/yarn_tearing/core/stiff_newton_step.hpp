@@ -57,9 +57,12 @@ class StiffNewtonStep {
              const std::vector<std::uint8_t>& movable, std::vector<std::uint8_t>& taut,
              std::vector<Eigen::Vector3d>& position, std::vector<double>& multiplier,
              ContactSet* contacts = nullptr, const StartDirections& start = {});
-  /// True when the last apply() changed a contact's stick / slip state or sliding impulse: the
-  /// next step of the iteration must run before the projection has converged.
-  bool frictionChanged() const { return friction_changed_; }
+  /// How much the last apply() changed the contacts' impulses [-]: the largest change relative
+  /// to the impulse (or, where larger, to the impulse that would move the free point by its
+  /// length scale). The iteration has not converged while it exceeds the tolerance (a point at
+  /// its friction bound may flip between sticking and sliding with the same impulse: the flags
+  /// alone would never settle).
+  double impulseChange() const { return impulse_change_; }
 
  private:
   /// Whether edge e's force acts on its end b (or a) along its start direction.
@@ -91,14 +94,10 @@ class StiffNewtonStep {
                      const std::vector<Eigen::Vector3d>& position, bool friction);
   /// The friction impulse [kg m] of sticking contact `c` whose first friction row is `row`.
   Eigen::Vector3d frictionImpulse(const Contact& c, int row) const;
-  /// Friction of a segment point (ContactSet): a known impulse in the cone, kept there during the
-  /// pivoting and, `between_steps`, moved to the one that holds the point where it stuck.
-  bool pivotSegmentFriction(Contact& c, double bound, double negligible,
-                            const Eigen::Vector3d& move,
-                            const std::vector<Eigen::Vector3d>& position, bool between_steps);
-  /// How contact `c`'s point moves [m] under a unit impulse [kg m] along `direction` on it, in the
-  /// last factorized system (the pushes of the other rows included).
-  Eigen::Vector3d pointResponse(const Contact& c, const Eigen::Vector3d& direction);
+  /// Keeps each contact's impulse before the solve (impulseChange()).
+  void rememberImpulses(const ContactSet& contacts);
+  /// Sets impulse_change_ from the impulses stored after the solve.
+  void measureImpulseChange(const ContactSet& contacts, const std::vector<double>& inverse_mass);
   /// The solved step's move of contact `c`'s point [m].
   Eigen::Vector3d pointMove(const Contact& c) const;
 
@@ -122,11 +121,11 @@ class StiffNewtonStep {
   BandedFactorization banded_factorization_;
   /// Factorization for other graphs, its symbolic analysis kept while the pattern holds.
   PatternCachedLdlt general_factorization_;
-  bool friction_changed_ = false;  ///< see frictionChanged()
-  Eigen::VectorXd response_;       ///< scratch of pointResponse
-  std::vector<int> vertex_row_;    ///< first row of each free vertex, -1 for supports
-  std::vector<int> edge_row_;      ///< row of each taut edge, -1 otherwise
-  std::vector<int> idle_row_;      ///< row of each slack movable edge (not banded), -1 otherwise
+  double impulse_change_ = 0.0;                    ///< see impulseChange()
+  std::vector<Eigen::Vector3d> previous_impulse_;  ///< per contact, before the solve [kg m]
+  std::vector<int> vertex_row_;  ///< first row of each free vertex, -1 for supports
+  std::vector<int> edge_row_;    ///< row of each taut edge, -1 otherwise
+  std::vector<int> idle_row_;    ///< row of each slack movable edge (not banded), -1 otherwise
   const std::vector<std::uint8_t>* movable_ = nullptr;  ///< the movable edges of this apply
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> matrix_;
@@ -148,9 +147,14 @@ class StiffNewtonStep {
   std::vector<int> friction_row_;            ///< per contact: its first friction row, -1 when none
   /// Compliance of contact rows relative to the row's own w sum [-]: keeps the system
   /// quasi-definite where contact rows are (nearly) dependent, e.g. two obstacles on a vertex.
-  static constexpr double kContactCompliance = 1e-9;
+  static constexpr double kContactCompliance = 1e-12;
   /// Relative margin on the friction bound, so a point right at it does not flip on round-off.
   static constexpr double kFrictionMargin = 1e-9;
+  /// Times a contact may start sliding within one step; after that it slides for the rest of
+  /// the step at the bound mu m_n, in the direction it last had (a point right at its bound,
+  /// the front of a slipping zone, would otherwise flip for ever, each state sending it to the
+  /// other). Its friction never exceeds the bound; its direction may lag the slip.
+  static constexpr int kMaxSlideStarts = 3;
   /// Relative change of a sliding impulse that needs another Newton step [-] (its bound and
   /// direction follow the iterate, converging with it).
   static constexpr double kFrictionTolerance = 1e-6;
