@@ -15,6 +15,25 @@ namespace {
 
 constexpr std::size_t kMaxTfReason = 160;  ///< [characters] of tf2's exception text quoted
 
+/// The unit quaternion of tf's `q` for `frame`; InputRejected (kNotFinite) when it has none.
+Eigen::Quaterniond rotationOf(const std::string& frame, const geometry_msgs::Quaternion& q) {
+  const Eigen::Quaterniond rotation(q.w, q.x, q.y, q.z);
+  if (!rotation.coeffs().allFinite() || !(rotation.norm() > 0.0)) {
+    throw InputRejected(RefusalReason::kNotFinite,
+                        "frame '" + clipped(frame) + "' has no valid rotation");
+  }
+  return rotation.normalized();
+}
+
+/// tf's translation `t` of `frame` [m]; InputRejected unless finite and within
+/// input_bounds::kMaxDistance of the fixed frame's origin.
+Eigen::Vector3d boundedOrigin(const std::string& frame, const geometry_msgs::Vector3& t) {
+  const Eigen::Vector3d origin(t.x, t.y, t.z);
+  requireBoundedVector(origin, input_bounds::kMaxDistance,
+                       "origin of frame '" + clipped(frame) + "'", "m");
+  return origin;
+}
+
 }  // namespace
 
 FrameTransformer::FrameTransformer(const tf2_ros::Buffer& buffer, std::string fixed_frame,
@@ -55,24 +74,25 @@ Eigen::Vector3d FrameTransformer::rotateToFixedFrame(const Eigen::Vector3d& vect
   if (frame.empty() || frame == fixed_frame_) {
     return vector;
   }
-  const geometry_msgs::Quaternion q = lookup(frame, stamp).transform.rotation;
-  const Eigen::Quaterniond rotation(q.w, q.x, q.y, q.z);
-  if (!rotation.coeffs().allFinite() || !(rotation.norm() > 0.0)) {
-    throw InputRejected(RefusalReason::kNotFinite,
-                        "frame '" + clipped(frame) + "' has no valid rotation");
-  }
-  return rotation.normalized() * vector;
+  return rotationOf(frame, lookup(frame, stamp).transform.rotation) * vector;
 }
 
 Eigen::Vector3d FrameTransformer::originInFixedFrame(const std::string& frame) const {
   if (frame == fixed_frame_) {
     return Eigen::Vector3d::Zero();
   }
-  const geometry_msgs::Vector3 t = lookup(frame, ros::Time(0)).transform.translation;
-  const Eigen::Vector3d origin(t.x, t.y, t.z);
-  requireBoundedVector(origin, input_bounds::kMaxDistance,
-                       "origin of frame '" + clipped(frame) + "'", "m");
-  return origin;
+  return boundedOrigin(frame, lookup(frame, ros::Time(0)).transform.translation);
+}
+
+Eigen::Isometry3d FrameTransformer::poseInFixedFrame(const std::string& frame) const {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  if (frame == fixed_frame_) {
+    return pose;
+  }
+  const geometry_msgs::Transform transform = lookup(frame, ros::Time(0)).transform;
+  pose.linear() = rotationOf(frame, transform.rotation).toRotationMatrix();
+  pose.translation() = boundedOrigin(frame, transform.translation);
+  return pose;
 }
 
 }  // namespace ros_layer

@@ -201,6 +201,19 @@ void loadBodies(const PrivateParams& params, SimulationConfig& config) {
   }
 }
 
+/// ~obstacles (optional): unique names.
+void loadObstacles(const PrivateParams& params, SimulationConfig& config) {
+  const std::optional<ParamValue> obstacles = params.get("obstacles");
+  if (!obstacles) return;
+  std::set<std::string> names;
+  for (const ParamValue& entry : obstacles->elements()) {
+    config.obstacles.push_back(loadObstacleSpec(entry));
+    if (!names.insert(config.obstacles.back().obstacle.name).second) {
+      entry.member("name").fail("a name that no other obstacle has");
+    }
+  }
+}
+
 /// Air damping is explicit: c * dt must stay below the lightest yarn's mass per length, or the drag
 /// overshoots (reverses the velocity) and grows without bound.
 void requireStableDamping(const PrivateParams& params, const SimulationConfig& config) {
@@ -233,6 +246,7 @@ SimulationConfig loadSimulationConfig(const ros::NodeHandle& private_nh) {
   config.node = loadNodeSettings(params);
   config.parameters = loadPhysics(params);
   loadBodies(params, config);
+  loadObstacles(params, config);
   requireStableDamping(params, config);
   warnUnknownKeys(private_nh, params.askedKeys());
   return config;

@@ -13,6 +13,7 @@
 #include "yarn_tearing/ros/clipped_text.hpp"
 #include "yarn_tearing/ros/materials_description.hpp"
 #include "yarn_tearing/ros/message_conversion.hpp"
+#include "yarn_tearing/ros/obstacle_markers.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
@@ -45,13 +46,15 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
       tf_listener_(tf_buffer_),
       frames_(tf_buffer_, config.node.frame_id, config.node.frame_timeout),
       inputs_(frames_),
+      obstacles_(frames_, config.obstacles, simulator_),
       markers_(config.node.frame_id, config.node.marker_width),
       scheduler_(config.parameters.time_step, config.node.real_time_factor, config.node.max_lag),
       stamps_(ros::Time::isSimTime() && config.node.publish_clock),
       publish_schedule_(config.node.publish_rate),
       diagnostics_(nh, private_nh),
       refusal_warnings_(kWarnPeriod, static_cast<std::size_t>(WarningSource::kCount) * kNumReasons),
-      wrenches_(private_nh, tf_buffer_, config.node.frame_id) {
+      wrenches_(private_nh, tf_buffer_, config.node.frame_id),
+      obstacle_wrenches_(private_nh) {
   states_pub_ = nh_.advertise<YarnStateArray>("yarn_states", kStateQueue);
   if (!simulator_.scene().fabrics.empty()) {
     fabric_states_pub_ = nh_.advertise<FabricStateArray>("fabric_states", kStateQueue);
@@ -78,10 +81,11 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
   materials.data = describeMaterialsYaml(simulator_.scene());
   materials_pub_.publish(materials);
   ROS_INFO(
-      "yarn_tearing_node: %zu yarns, %zu fabrics, %zu vertices, time_step %g s, real_time_factor "
-      "%g%s",
-      config_.yarns.size(), config_.fabrics.size(), simulator_.scene().vertices.size(),
-      config_.parameters.time_step, config_.node.real_time_factor,
+      "yarn_tearing_node: %zu yarns, %zu fabrics, %zu obstacles, %zu vertices, time_step %g s, "
+      "real_time_factor %g%s",
+      config_.yarns.size(), config_.fabrics.size(), config_.obstacles.size(),
+      simulator_.scene().vertices.size(), config_.parameters.time_step,
+      config_.node.real_time_factor,
       config_.node.real_time_factor == 0.0 ? " (as fast as possible)" : "");
 }
 
@@ -127,6 +131,7 @@ void YarnTearingNode::stepCycle() {
     return;
   }
   inputs_.beginCycle();
+  obstacles_.beginCycle(simulator_);
   const double start = wallSeconds();
   if (scheduler_.asFastAsPossible()) {
     do {
@@ -146,6 +151,7 @@ void YarnTearingNode::stepCycle() {
 
 void YarnTearingNode::stepOnce(double fraction) {
   inputs_.beforeStep(simulator_, fraction);
+  obstacles_.beforeStep(simulator_, fraction);
   simulator_.step();
   diagnostics_.recordStep(simulator_.lastHealth(), simulator_.scene());
   if (!simulator_.lastHealth().restored_yarns.empty()) {
@@ -198,7 +204,6 @@ void YarnTearingNode::publishBreakEvents() {
 }
 
 void YarnTearingNode::publishState() {
-  const Scene& scene = simulator_.scene();
   const ros::Time stamp = stampOf(simulator_.time());
   if (states_pub_.getNumSubscribers() > 0) {
     states_pub_.publish(toYarnStateArray(simulator_, config_.node.frame_id, stamp));
@@ -207,9 +212,38 @@ void YarnTearingNode::publishState() {
     fabric_states_pub_.publish(toFabricStateArray(simulator_, config_.node.frame_id, stamp));
   }
   if (markers_pub_.getNumSubscribers() > 0) {
-    markers_pub_.publish(markers_.build(scene, stamp));
+    markers_pub_.publish(buildMarkers(stamp));
   }
   wrenches_.publish(simulator_, inputs_.graspFrames(), stamp);
+  publishObstacleWrenches(stamp);
+}
+
+visualization_msgs::MarkerArray YarnTearingNode::buildMarkers(const ros::Time& stamp) {
+  visualization_msgs::MarkerArray array = markers_.build(simulator_.scene(), stamp);
+  for (std::size_t i = 0; i < obstacles_.size(); ++i) {
+    if (const std::optional<std::size_t> index = obstacles_.simulatorIndex(i)) {
+      for (visualization_msgs::Marker& marker :
+           obstacleMarkers(simulator_.obstacles()[*index], simulator_.contactWrench(*index),
+                           config_.node.frame_id, stamp)) {
+        array.markers.push_back(std::move(marker));
+      }
+    }
+  }
+  return array;
+}
+
+void YarnTearingNode::publishObstacleWrenches(const ros::Time& stamp) {
+  for (std::size_t i = 0; i < obstacles_.size(); ++i) {
+    const std::optional<std::size_t> index = obstacles_.simulatorIndex(i);
+    const std::string topic = "obstacles/" + obstacles_.spec(i).obstacle.name + "/wrench";
+    if (!index || !obstacle_wrenches_.wanted(topic)) continue;
+    const ContactWrench wrench = simulator_.contactWrench(*index);
+    if (!wrench.force.allFinite() || !wrench.torque.allFinite()) continue;  // a restored step
+    // the core's torque is about the obstacle's origin p: about frame_id's it is tau + p x F
+    const Eigen::Vector3d origin = simulator_.obstacles()[*index].pose.translation();
+    obstacle_wrenches_.publish(topic, config_.node.frame_id, stamp, wrench.force,
+                               wrench.torque + origin.cross(wrench.force));
+  }
 }
 
 void YarnTearingNode::setPaused(bool paused) {

@@ -5,6 +5,7 @@
 #include <tf2_ros/buffer.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <string>
 
 namespace yarn_tearing {
@@ -31,6 +32,10 @@ class FrameTransformer {
   /// when the frame is unknown or stale, or its origin is not finite or farther than
   /// input_bounds::kMaxDistance from the fixed frame's.
   Eigen::Vector3d originInFixedFrame(const std::string& frame) const;
+
+  /// Pose of `frame` in the fixed frame [m] at the latest available time (identity for the fixed
+  /// frame). Throws InputRejected as originInFixedFrame(), or when the rotation is not finite.
+  Eigen::Isometry3d poseInFixedFrame(const std::string& frame) const;
 
  private:
   /// tf2's transform from `frame` to the fixed frame at `stamp`; InputRejected on failure, or

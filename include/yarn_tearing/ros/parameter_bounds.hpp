@@ -34,6 +34,9 @@ constexpr double kMaxWeibullModulus = 1.0e3;  ///< weibull_modulus [-] (0 = none
 constexpr double kMaxFrameTimeout = 1.0e6;    ///< frame_timeout [s]
 constexpr int kMaxYarnVertices = 100000;     ///< num_vertices of one yarn (ends, picks of a fabric)
 constexpr double kMaxShearRigidity = 1.0e6;  ///< a fabric's shear_rigidity [N/m]
+constexpr double kMinObstacleSize = 1.0e-6;  ///< an obstacle's radius, half length, half extent [m]
+constexpr double kMaxObstacleSize = 1.0e4;   ///< the same, at most [m] (as the core)
+constexpr double kMaxFriction = 10.0;  ///< an obstacle's friction coefficient [-] (as the core)
 /// Vertices plus edges over all yarns: checked before anything is allocated (~200 bytes each).
 constexpr std::size_t kSceneBudget = 1000000;
 

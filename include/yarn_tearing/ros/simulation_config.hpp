@@ -8,16 +8,18 @@
 #include "yarn_tearing/core/simulation_parameters.hpp"
 #include "yarn_tearing/core/yarn_spec.hpp"
 #include "yarn_tearing/ros/node_settings.hpp"
+#include "yarn_tearing/ros/obstacle_spec_loader.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
 
 /// Everything the node is configured with, read from its private parameters.
 struct SimulationConfig {
-  SimulationParameters parameters;  ///< physics parameters shared by all yarns
-  std::vector<YarnSpec> yarns;      ///< the yarns of the scene, in parameter order
-  std::vector<FabricSpec> fabrics;  ///< the fabrics of the scene (after the yarns), in order
-  NodeSettings node;                ///< timing, publishing and drawing settings
+  SimulationParameters parameters;      ///< physics parameters shared by all yarns
+  std::vector<YarnSpec> yarns;          ///< the yarns of the scene, in parameter order
+  std::vector<FabricSpec> fabrics;      ///< the fabrics of the scene (after the yarns), in order
+  std::vector<ObstacleSpec> obstacles;  ///< what the yarns touch, in parameter order
+  NodeSettings node;                    ///< timing, publishing and drawing settings
 };
 
 /// Reads and validates every parameter of the node from its private namespace (see

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/ros/wrench_topics.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
@@ -32,14 +33,10 @@ class SupportWrenchPublisher {
                const ros::Time& stamp);
 
  private:
-  /// The publisher of `topic`, advertised on first use.
-  ros::Publisher& publisherFor(const std::string& topic);
-
-  ros::NodeHandle private_nh_;
+  WrenchTopics topics_;  ///< in the private namespace
   const tf2_ros::Buffer& buffer_;
   std::string fixed_frame_;
-  std::map<std::string, ros::Publisher> publishers_;  ///< topic -> publisher
-  std::set<std::string> invalid_names_;               ///< yarn names no topic can carry (warned)
+  std::set<std::string> invalid_names_;  ///< yarn names no topic can carry (warned)
 };
 
 }  // namespace ros_layer

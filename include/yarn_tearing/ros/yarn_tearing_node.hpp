@@ -6,6 +6,7 @@
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <atomic>
 #include <boost/thread/recursive_mutex.hpp>
@@ -18,6 +19,7 @@
 #include "yarn_tearing/ros/frame_transformer.hpp"
 #include "yarn_tearing/ros/input_handler.hpp"
 #include "yarn_tearing/ros/marker_builder.hpp"
+#include "yarn_tearing/ros/obstacle_tracker.hpp"
 #include "yarn_tearing/ros/rate_schedule.hpp"
 #include "yarn_tearing/ros/simulation_config.hpp"
 #include "yarn_tearing/ros/simulation_diagnostics.hpp"
@@ -25,6 +27,7 @@
 #include "yarn_tearing/ros/step_scheduler.hpp"
 #include "yarn_tearing/ros/support_wrench_publisher.hpp"
 #include "yarn_tearing/ros/warning_throttle.hpp"
+#include "yarn_tearing/ros/wrench_topics.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
@@ -32,7 +35,8 @@ namespace ros_layer {
 /// The yarn_tearing_node: steps a Simulator at real_time_factor and connects it to ROS.
 ///
 /// Topics (relative to the node's namespace): subscribes applied_force, grasp; publishes
-/// yarn_states, yarn_markers and the holders' wrenches (~grasp_wrench/..., ~pin_wrench/...) at
+/// yarn_states, yarn_markers (with the obstacles), the holders' wrenches (~grasp_wrench/...,
+/// ~pin_wrench/...) and the obstacles' contact wrenches (~obstacles/<name>/wrench) at
 /// publish_rate, break_events (one message per break, right after
 /// the step that tore), yarn_materials (latched YAML), /clock when publish_clock, /diagnostics.
 /// Services: ~reset (std_srvs/Empty), ~set_paused (std_srvs/SetBool); dynamic_reconfigure
@@ -79,6 +83,11 @@ class YarnTearingNode {
   void stepOnce(double fraction);
   void publishBreakEvents();
   void publishState();
+  /// The force [N] the yarns exerted on each obstacle in the last step and its torque [N m] about
+  /// frame_id's origin, in frame_id, on ~obstacles/<name>/wrench (only when subscribed).
+  void publishObstacleWrenches(const ros::Time& stamp);
+  /// yarn_markers: the scene's and the obstacles' markers.
+  visualization_msgs::MarkerArray buildMarkers(const ros::Time& stamp);
   void publishClock();
   /// Anchors the step pacing and the stamps to now (start, reset, resume).
   void restartPacing();
@@ -97,6 +106,7 @@ class YarnTearingNode {
   tf2_ros::TransformListener tf_listener_;
   FrameTransformer frames_;
   InputHandler inputs_;
+  ObstacleTracker obstacles_;
   MarkerBuilder markers_;
   StepScheduler scheduler_;
   StampClock stamps_;
@@ -104,6 +114,7 @@ class YarnTearingNode {
   SimulationDiagnostics diagnostics_;
   WarningThrottle refusal_warnings_;
   SupportWrenchPublisher wrenches_;
+  WrenchTopics obstacle_wrenches_;  ///< ~obstacles/<name>/wrench
   ros::Publisher states_pub_;
   ros::Publisher fabric_states_pub_;  ///< only when the scene has fabrics
   ros::Publisher breaks_pub_;

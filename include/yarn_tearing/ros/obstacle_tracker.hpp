@@ -1,0 +1,67 @@
+#pragma once
+
+#include <Eigen/Geometry>
+#include <optional>
+#include <vector>
+
+#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/ros/frame_transformer.hpp"
+#include "yarn_tearing/ros/input_rejected.hpp"
+#include "yarn_tearing/ros/obstacle_spec_loader.hpp"
+#include "yarn_tearing/ros/warning_throttle.hpp"
+
+namespace yarn_tearing {
+namespace ros_layer {
+
+/// The obstacles of ~obstacles in the simulator. A fixed one is there from the start. One attached
+/// to a tf frame joins the simulator in the first stepping cycle its frame resolves and then
+/// follows it: its frame is looked up once per cycle (latest transform, as grasp targets) and the
+/// obstacle moved over the cycle's steps from the last pose to the new one (position linearly,
+/// rotation by slerp). A lookup that fails (unknown, unresolvable or stale frame, an origin past
+/// input_bounds::kMaxDistance) leaves the obstacle at its last pose, warned throttled per reason;
+/// nothing here throws into the step loop.
+class ObstacleTracker {
+ public:
+  /// `frames` must outlive this object. Gives `simulator` the fixed obstacles of `specs`.
+  ObstacleTracker(const FrameTransformer& frames, std::vector<ObstacleSpec> specs,
+                  Simulator& simulator);
+
+  /// Before a cycle of steps: looks up the attached obstacles' frames; those resolved for the
+  /// first time join the simulator.
+  void beginCycle(Simulator& simulator);
+  /// Before each step: moves each attached obstacle `fraction` (0..1] of the way from its pose at
+  /// the previous cycle to this cycle's.
+  void beforeStep(Simulator& simulator, double fraction);
+
+  /// Number of obstacles of ~obstacles.
+  std::size_t size() const { return tracked_.size(); }
+  /// Obstacle `i` of ~obstacles as configured (its pose: the fixed pose, or the offset's frame).
+  const ObstacleSpec& spec(std::size_t i) const { return tracked_.at(i).spec; }
+  /// Index of obstacle `i` of ~obstacles in the simulator's obstacles(), or none while an
+  /// attached obstacle's frame has never resolved.
+  std::optional<std::size_t> simulatorIndex(std::size_t i) const;
+
+ private:
+  struct Tracked {
+    ObstacleSpec spec;
+    Eigen::Isometry3d from = Eigen::Isometry3d::Identity();  ///< pose at the cycle's start [m]
+    Eigen::Isometry3d to = Eigen::Isometry3d::Identity();    ///< pose at the cycle's end [m]
+    int index = -1;       ///< in the simulator's obstacles(); -1 = not (yet) there
+    bool placed = false;  ///< fixed, or attached and its frame resolved at least once
+    bool lost = false;    ///< its last lookup failed (logged when it resolves again)
+  };
+
+  /// Looks up where attached obstacle `tracked` is now; false (warned) when it cannot be found.
+  bool lookUp(Tracked& tracked);
+  /// Warns, throttled per reason, that `tracked`'s frame lookup failed with `e`.
+  void warnLookupFailed(Tracked& tracked, const InputRejected& e);
+  /// Gives the simulator every obstacle that is placed (fixed, or attached and resolved once).
+  void placeInSimulator(Simulator& simulator);
+
+  const FrameTransformer& frames_;
+  std::vector<Tracked> tracked_;  ///< in ~obstacles order
+  WarningThrottle warnings_;      ///< per RefusalReason
+};
+
+}  // namespace ros_layer
+}  // namespace yarn_tearing
