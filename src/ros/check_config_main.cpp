@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <vector>
 
 #include "yarn_tearing/core/simulator.hpp"
 #include "yarn_tearing/ros/node_runner.hpp"
@@ -28,6 +29,11 @@ int main(int argc, char** argv) {
   try {
     const ros_layer::SimulationConfig config = ros_layer::loadSimulationConfig(private_nh);
     Simulator simulator(config.parameters, config.yarns, config.fabrics);
+    std::vector<Obstacle> fixed_obstacles;  // attached ones follow tf frames, absent here
+    for (const ros_layer::ObstacleSpec& spec : config.obstacles) {
+      if (!spec.attached()) fixed_obstacles.push_back(spec.obstacle);
+    }
+    simulator.setObstacles(fixed_obstacles);
     const ros::WallTime start = ros::WallTime::now();
     const double steps = kCheckedTime / config.parameters.time_step;
     for (double k = 0.0; k < steps && ros::ok(); k += 1.0) {

@@ -7,6 +7,8 @@ carries it LIFT_HEIGHT above the table. While it carries it:
   negative) opposes the weight; the table then reads nothing;
 - the yarn rises with the box (its vertices at the box's top face + r);
 - nothing in yarn_states or in the wrenches is NaN or infinite.
+When tf then stops broadcasting `lift`, the stale frame leaves the box where it was: the yarn
+stays on it and its wrench still reads the weight.
 Before the lift the table carries the weight. m = density * pi r^2 * length from the config."""
 import math
 import statistics
@@ -34,6 +36,7 @@ SETTLE = 1.0           # [s] the yarn settles on the table (it starts 0.1 mm abo
 # free for a moment). The median keeps such samples out; 1 % is the tension tests' tolerance, far
 # above the solver's error and far below any missing share of the weight.
 WEIGHT_TOLERANCE = 0.01
+STALE_WAIT = 2.5       # [s] wall: past frame_timeout (1 s) after the last broadcast
 HEIGHT_TOLERANCE = 5.0e-4  # [m] tf lags the box by a cycle or two (a few um at 2 mm/s) + slack
 
 
@@ -136,8 +139,24 @@ class ObstacleLiftTest(unittest.TestCase):
         final = [p.z for p in support.find_yarn(states.latest(), yarn["name"]).positions]
         self.assertAlmostEqual(statistics.mean(final), LIFT_HEIGHT + radius, delta=HEIGHT_TOLERANCE)
         self.check_markers(markers.messages(), profile, carrying)
-        frame.stop()
         self.assertGreater(frame_stop, profile.rise_end)
+
+        # tf stops: once `lift` is stale (frame_timeout 1 s) the box keeps its last pose (warned),
+        # the yarn stays on it, the box still reads its weight, nothing is NaN, states go on
+        frame.stop()
+        stopped = time.monotonic()
+        time.sleep(STALE_WAIT)
+        late = [m for t, m in states.records(since=stopped + STALE_WAIT - 0.5)]
+        self.assertGreater(len(late), 10, "yarn_states stopped after the frame went stale")
+        for msg in late:
+            self.assertTrue(support.state_is_finite(msg))
+            zs = [p.z for p in support.find_yarn(msg, yarn["name"]).positions]
+            self.assertAlmostEqual(statistics.mean(zs), LIFT_HEIGHT + radius, delta=HEIGHT_TOLERANCE)
+        late_lift = [m for t, m in lift.records(since=stopped + STALE_WAIT - 0.5)]
+        self.assertGreater(len(late_lift), 10)
+        self.assertTrue(all(finite_wrench(m) for m in late_lift))
+        self.assertLess(abs(statistics.median(m.wrench.force.z for m in late_lift) + weight),
+                        WEIGHT_TOLERANCE * weight)
 
     def check_markers(self, arrays, profile, carrying):
         """yarn_markers draws the table and the box where they are, and an arrow of the force
