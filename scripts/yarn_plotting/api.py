@@ -18,7 +18,8 @@ def make_all(bag_path: str, out_dir: str, material_file: Optional[str] = None,
     ``paths`` (figure name -> PNG path), ``break_times`` (x positions [s] of
     the break lines drawn in tension_strain.png), ``frame_times`` [s],
     ``time_origin`` [s] (the bag stamp plotted as t = 0), ``strengths``
-    (yarn -> materials.YarnStrength) and the figures' other returned info.
+    (yarn -> materials.YarnStrength), the figures' other returned info and
+    ``data`` (the bagdata.BagData read).
     Raises bagdata.BagError for a missing/unreadable bag or one without
     yarn states, KeyError for an unknown preset.
     """
@@ -41,4 +42,5 @@ def make_all(bag_path: str, out_dir: str, material_file: Optional[str] = None,
         "time_origin": data.time_origin,
         "strengths": strengths,
         "info": info,
+        "data": data,
     }
