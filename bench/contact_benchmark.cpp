@@ -4,7 +4,8 @@
 //     same yarn without the peg (hanging from its pin). Target: with the peg <= 2x without.
 //   BM_LyingOnPlane/1000/1 vs BM_LyingOnPlane/1000/0: 1,000 vertices lying straight on a table
 //     (a plane, friction mu = 0.3), settled; /0 is the same yarn without the table (falling
-//     freely from the same start). Target: on the table <= 2x free.
+//     freely from the same start); /2 the table without friction. Target: on the table <= 2x
+//     free.
 // Run (README, Performance):
 //   build/core/yarn_tearing_bench --benchmark_filter='Peg|Plane' --benchmark_repetitions=5
 //     --benchmark_report_aggregates_only=true
@@ -76,19 +77,20 @@ void BM_DrapedOverPeg(benchmark::State& state) {
   timeSteps(state, sim);
 }
 
-/// range(0) vertices lying straight on a table (a plane at z = 0, mu = 0.3) at rest, settled for
-/// 0.2 s; range(1) = 1 with the table, 0 without (the same yarn falling freely for 0.2 s).
+/// range(0) vertices lying straight on a table (a plane at z = 0) at rest, settled for 0.2 s;
+/// range(1) = 1 with the table (mu = 0.3), 2 with a frictionless table, 0 without (the same yarn
+/// falling freely for 0.2 s).
 void BM_LyingOnPlane(benchmark::State& state) {
   const int vertices = static_cast<int>(state.range(0));
-  const bool with_table = state.range(1) != 0;
+  const int table_case = static_cast<int>(state.range(1));
   YarnSpec spec = cottonYarn(vertices, Eigen::Vector3d::Zero());
   spec.start.z() = spec.radius;
   Simulator sim(SimulationParameters{}, {spec});
-  if (with_table) {
+  if (table_case != 0) {
     Obstacle table;
     table.name = "table";
     table.shape = ObstacleShape::kPlane;
-    table.friction = 0.3;
+    table.friction = table_case == 1 ? 0.3 : 0.0;
     sim.setObstacles({table});
   }
   advance(sim, 0.2);
@@ -96,7 +98,11 @@ void BM_LyingOnPlane(benchmark::State& state) {
 }
 
 BENCHMARK(BM_DrapedOverPeg)->Args({25, 0})->Args({25, 1})->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_LyingOnPlane)->Args({1000, 0})->Args({1000, 1})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_LyingOnPlane)
+    ->Args({1000, 0})
+    ->Args({1000, 1})
+    ->Args({1000, 2})
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace yarn_tearing
