@@ -97,25 +97,42 @@ void Simulator::resetWorkspace() {
 }
 
 void Simulator::step() {
-  if (recoil_pending_ && parameters_.recoil_substeps > 1) {
+  const bool can_substep = parameters_.recoil_substeps > 1;
+  if (recoil_pending_ && can_substep) {
     advanceInSubsteps();
-  } else {
-    advance();
+  } else if (!advance(can_substep)) {
+    advanceInSubsteps();  // the whole step did not converge: taken again in substeps
   }
   ++step_count_;
 }
 
-void Simulator::advance() {
+bool Simulator::advance(bool undo_if_unconverged) {
   accumulateForces();          // 1
   predictPositions();          // 2
   projectLengthConstraints();  // 3
-  estimateTensions();          // 4
-  updateMaterial();            // 5
+  if (undo_if_unconverged && !health_.projection_converged) {
+    undoPrediction();
+    return false;
+  }
+  estimateTensions();  // 4
+  updateMaterial();    // 5
   time_ += parameters_.time_step;
   const std::size_t events_before = pending_events_.size();
   tear();  // 6
   restoreNonFiniteYarns(events_before);
   recoil_pending_ = health_.breaks > 0 && health_.restored_yarns.empty();
+  previous_pose_.clear();
+  for (const Obstacle& o : obstacles_) previous_pose_.push_back(o.pose);
+  health_.substeps = 1;
+  return true;
+}
+
+void Simulator::undoPrediction() {
+  scene_.vertices.position = work_.start_position;
+  scene_.vertices.velocity = work_.start_velocity;
+  // The warm starts hold the unconverged solve; nothing else has changed yet (stages 4-6 have
+  // not run, and the obstacles' previous poses are kept until a step completes).
+  resetWorkspace();
 }
 
 void Simulator::restoreNonFiniteYarns(std::size_t first_event_of_step) {
@@ -144,27 +161,27 @@ void Simulator::advanceInSubsteps() {
   const double start_time = time_;
   const int substeps = parameters_.recoil_substeps;
   parameters_.time_step = time_step / substeps;
-  int breaks = 0;
+  StepHealth whole;  // of the whole step: the worst of its substeps
+  whole.projection_iterations = 0;
   bool tore = false;
-  std::vector<std::uint32_t> restored;
   for (int i = 1; i <= substeps; ++i) {
     const double fraction = static_cast<double>(i) / substeps;
     for (std::size_t v = 0; v < vertices.size(); ++v) {
       if (vertices.motion[v] != VertexMotion::kKinematic) continue;
       vertices.kinematic_target[v] = step_start_[v] + fraction * (step_target_[v] - step_start_[v]);
     }
-    advance();
-    breaks += health_.breaks;
+    advance(false);
+    accumulateHealth(health_, whole);
     tore = tore || recoil_pending_;
-    restored.insert(restored.end(), health_.restored_yarns.begin(), health_.restored_yarns.end());
   }
   parameters_.time_step = time_step;
   vertices.kinematic_target = step_target_;
   time_ = start_time + time_step;
-  health_.breaks = breaks;
-  std::sort(restored.begin(), restored.end());
-  restored.erase(std::unique(restored.begin(), restored.end()), restored.end());
-  health_.restored_yarns = restored;
+  std::sort(whole.restored_yarns.begin(), whole.restored_yarns.end());
+  whole.restored_yarns.erase(std::unique(whole.restored_yarns.begin(), whole.restored_yarns.end()),
+                             whole.restored_yarns.end());
+  whole.substeps = substeps;
+  health_ = whole;
   recoil_pending_ = tore;
 }
 
@@ -219,10 +236,7 @@ void Simulator::projectLengthConstraints() {
 }
 
 void Simulator::applyContactForces() {
-  for (std::size_t o = 0; o < obstacles_.size(); ++o) {
-    contact_wrench_[o] = ContactWrench{};
-    previous_pose_[o] = obstacles_[o].pose;
-  }
+  for (ContactWrench& wrench : contact_wrench_) wrench = ContactWrench{};
   const double dt2 = parameters_.time_step * parameters_.time_step;
   const std::vector<Eigen::Vector3d>& x = scene_.vertices.position;
   for (const Contact& c : work_.contacts.contacts()) {

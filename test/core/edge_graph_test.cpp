@@ -148,6 +148,7 @@ StepHealth settledHealth(ProjectionMethod method, double end_mass) {
   SimulationParameters p;
   p.projection_method = method;
   p.max_projection_iterations = 5000;
+  p.recoil_substeps = 1;  // the method's own solve: no step taken again in substeps
   YarnSpec spec = hangingYarn();
   spec.end_mass = end_mass;
   Simulator sim(p, {spec});

@@ -40,7 +40,9 @@ class Simulator {
   /// and grasps cleared), drops that yarn's events of this step, and lists it in
   /// lastHealth().restored_yarns; the other yarns go on.
   void step();
-  /// True when the next step() resolves the recoil of a tear in recoil_substeps substeps.
+  /// True when the next step() resolves the recoil of a tear in recoil_substeps substeps. A step
+  /// whose projection does not converge is also taken again in recoil_substeps substeps (a
+  /// sudden load far beyond what one step can take back; lastHealth().substeps says so).
   bool recoilPending() const { return recoil_pending_; }
 
   /// Replaces the parameters between steps (live tuning: air damping, regularization, breaking
@@ -87,10 +89,14 @@ class Simulator {
   std::uint64_t stepCount() const { return step_count_; }
 
  private:
-  /// Stages 1-6 over parameters_.time_step; advances time_.
-  void advance();
+  /// Stages 1-6 over parameters_.time_step; advances time_. With `undo_if_unconverged`, a
+  /// projection that does not converge undoes the step instead (undoPrediction()) and returns
+  /// false (stages 4-6 not run, time_ unchanged).
+  bool advance(bool undo_if_unconverged);
+  /// Puts the vertices back where the step started and forgets the solvers' warm starts.
+  void undoPrediction();
   /// One step of `time_step` in parameters_.recoil_substeps equal substeps, kinematic vertices
-  /// moved linearly to their targets.
+  /// moved linearly to their targets; lastHealth() is the worst of the substeps'.
   void advanceInSubsteps();
   void accumulateForces();
   void predictPositions();

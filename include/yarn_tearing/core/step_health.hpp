@@ -21,6 +21,14 @@ struct StepHealth {
   /// Yarns (scene indices) this step left with a non-finite value, restored to their initial
   /// state (Simulator::step); empty in a healthy step.
   std::vector<std::uint32_t> restored_yarns;
+  /// Substeps the step was taken in [-]: 1, or recoil_substeps after a tear or when the whole
+  /// step's projection did not converge (the other fields are then the worst substep's, breaks
+  /// and restored_yarns their union).
+  int substeps = 1;
 };
+
+/// Folds one substep's health into the whole step's `whole`: the worst of each measure, the
+/// sum of iterations and breaks, the union of restored yarns.
+void accumulateHealth(const StepHealth& substep, StepHealth& whole);
 
 }  // namespace yarn_tearing
