@@ -68,7 +68,7 @@ TEST(TrouserTear, DoublingTheWeftStrengthDoublesTheTearForce) {
   EXPECT_NEAR(strong.mean_peak, 2.0 * base.mean_peak, tolerance);
 }
 
-/// What a trouser tear of a patch with `picks` picks over 5 cm shows at its force peaks.
+/// What a trouser tear of a 6-end patch with `picks` picks over 5 cm shows at its force peaks.
 struct TipSharing {
   double median_peak = 0.0;  ///< median of the force peaks [N]
   /// Mean over the peaks of the number of weft segments on the slit's line carrying at least a
@@ -77,7 +77,7 @@ struct TipSharing {
 };
 
 TipSharing tearWithPicks(int picks) {
-  FabricSpec spec = cottonPatch(10, picks, 0.05, 0.05);
+  FabricSpec spec = cottonPatch(6, picks, 0.05, 0.05);
   spec.warp.radius *= 2.0 * std::sqrt(2.0);  // strong tongues, as above
   const double breaking = breakingForce(spec.weft);
   const auto middle = static_cast<std::uint32_t>(spec.ends / 2 - 1);
@@ -85,7 +85,7 @@ TipSharing tearWithPicks(int picks) {
   SimulationParameters p;
   p.time_step = 1.0e-3;
   const TrouserTearResult result =
-      runTrouserTear(p, spec, {picks * 3 / 10, 0.05, 0.3}, [&](const Simulator& sim) {
+      runTrouserTear(p, spec, {picks * 3 / 10, 0.05, 0.2}, [&](const Simulator& sim) {
         const Scene& scene = sim.scene();
         int loaded = 0;
         for (int row = 0; row < picks; ++row) {
@@ -95,7 +95,7 @@ TipSharing tearWithPicks(int picks) {
         }
         sharing.push_back(loaded);
       });
-  EXPECT_GE(result.peaks.size(), 3u) << picks << " picks";
+  EXPECT_GE(result.peaks.size(), 2u) << picks << " picks";
   TipSharing out;
   for (const double peak : result.peaks) {
     const auto at = std::find_if(result.curve.begin(), result.curve.end(),
@@ -117,15 +117,15 @@ TEST(TrouserTear, TheTearForceRisesWithTheYarnsSharingTheLoadAtTheTip) {
   // The same 5 cm patch and yarns, woven with more picks per length: the tongues' opening angle
   // spreads the tip's load over a length of the slit's line, which holds more picks when they
   // lie closer. Each simulated pick is one yarn of the weft's strength.
-  const TipSharing sparse = tearWithPicks(6);
-  const TipSharing medium = tearWithPicks(14);
-  const TipSharing dense = tearWithPicks(28);
+  const TipSharing sparse = tearWithPicks(4);
+  const TipSharing medium = tearWithPicks(8);
+  const TipSharing dense = tearWithPicks(16);
   EXPECT_LT(sparse.sharing_yarns, medium.sharing_yarns);
   EXPECT_LT(medium.sharing_yarns, dense.sharing_yarns);
   EXPECT_LT(sparse.median_peak, medium.median_peak);
   EXPECT_LT(medium.median_peak, dense.median_peak);
   // Never below one yarn's breaking force: the tip's yarn breaks at it, others add to it.
-  EXPECT_GE(sparse.median_peak, breakingForce(cottonPatch(10, 6, 0.05, 0.05).weft));
+  EXPECT_GE(sparse.median_peak, breakingForce(cottonPatch(6, 4, 0.05, 0.05).weft));
 }
 
 }  // namespace
