@@ -34,6 +34,7 @@ void SimulationDiagnostics::recordStep(const StepHealth& health, const Scene& sc
   max_violation_ = std::max(max_violation_, health.max_constraint_violation);
   max_residual_ = std::max(max_residual_, health.tension_residual);
   unconverged_ += health.projection_converged ? 0 : 1;
+  substepped_ += health.substeps > 1 ? 1 : 0;
   finite_ = finite_ && std::isfinite(health.max_constraint_violation) &&
             std::isfinite(health.tension_residual);
 }
@@ -91,6 +92,7 @@ void SimulationDiagnostics::report(diagnostic_updater::DiagnosticStatusWrapper& 
   status.add("max constraint violation [-]", max_violation_);
   status.add("max tension residual [-]", max_residual_);
   status.add("unconverged steps", unconverged_);
+  status.add("substepped steps", substepped_);
   status.add("target real-time factor", pacing_.target_real_time_factor);
   status.add("achieved real-time factor", achieved_factor_);
   status.add("dropped steps (total)", pacing_.dropped_steps);
@@ -105,6 +107,7 @@ void SimulationDiagnostics::report(diagnostic_updater::DiagnosticStatusWrapper& 
   max_violation_ = 0.0;
   max_residual_ = 0.0;
   unconverged_ = 0;
+  substepped_ = 0;
   finite_ = true;
   restorations_ = 0;
 }

@@ -1,13 +1,15 @@
 #!/usr/bin/python3
 """Through topics only: force_ramp pulls a pinned yarn until it tears; the break event's tension
 matches the closed-form breaking tension sigma_b * pi * r^2 from this test's own config (2 %), and
-force_ramp then ends."""
+force_ramp then ends; /diagnostics counts the step after the tear as taken in substeps (the
+recoil, README departure 7)."""
 import math
 import unittest
 
 import rosnode
 import rospy
 import rostest
+from diagnostic_msgs.msg import DiagnosticArray
 
 import yarn_rostest_support as support
 
@@ -23,6 +25,7 @@ class TearingTest(unittest.TestCase):
         breaking_tension = breaking_stress * math.pi * yarn["radius"] ** 2  # [N]
 
         breaks = support.record_breaks()
+        diagnostics = support.TopicRecorder("/diagnostics", DiagnosticArray)
         self.assertTrue(support.wait_until(breaks.messages, timeout=40.0), "no break_events")
         rospy.sleep(0.5)  # any further (wrong) events
         events = breaks.messages()
@@ -48,6 +51,14 @@ class TearingTest(unittest.TestCase):
 
         self.assertTrue(support.wait_until(ramp_ended, timeout=10.0),
                         "force_ramp still running after its yarn tore")
+
+        def substepped_steps():  # summed over the reports so far (each counts since the last)
+            return sum(int(value.value) for array in diagnostics.messages()
+                       for status in array.status for value in status.values
+                       if value.key == "substepped steps")
+
+        self.assertTrue(support.wait_until(lambda: substepped_steps() >= 1, timeout=5.0),
+                        "/diagnostics never counted the tear's recoil step as substepped")
 
 
 if __name__ == "__main__":

@@ -55,6 +55,7 @@ class SimulationDiagnostics {
   double max_violation_ = 0.0;  ///< [-]
   double max_residual_ = 0.0;   ///< [-]
   std::uint64_t unconverged_ = 0;
+  std::uint64_t substepped_ = 0;  ///< steps taken in substeps (a tear's recoil or a retry)
   bool finite_ = true;
   std::uint64_t restorations_ = 0;  ///< yarns restored from a non-finite state
   std::string last_restored_;       ///< name of the last one (clipped)
