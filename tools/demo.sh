@@ -9,6 +9,8 @@
 #   tools/demo.sh rviz:=true                        # also RViz (installs the rviz package)
 #   tools/demo.sh bag:=/tmp/demo.bag                # the bag elsewhere (figures still in <out>)
 #   tools/demo.sh record:=false                     # no bag, no figures
+#   tools/demo.sh --capstan                         # the capstan demo instead (capstan_demo.launch,
+#                                                   # ~1 min): also capstan.png
 #
 # <out> is $YARN_TEARING_DEMO_OUT, default ./yarn_tearing_demo_<UTC time>. Exits non-zero when the
 # yarns did not both tear (demo_supervisor timed out or was interrupted) or plotting failed.
@@ -19,11 +21,20 @@ out="${YARN_TEARING_DEMO_OUT:-${PWD}/yarn_tearing_demo_$(date -u +%Y%m%dT%H%M%SZ
 out="$(realpath -m "${out}")"
 bag="${out}/demo.bag"
 record=true
+launch_file=demo.launch
+plot_args=()
 
 install_args=()
 launch_args=()
 for arg in "$@"; do
   case "${arg}" in
+    --capstan)
+      launch_file=capstan_demo.launch
+      # plot_bag draws the capstan law with the peg's friction coefficient from the demo's config.
+      mu="$(/usr/bin/python3 -c 'import sys, yaml; print(yaml.safe_load(open(sys.argv[1]))["obstacles"][0]["friction"])' "${repo}/config/capstan_demo.yaml")"
+      plot_args+=(--capstan-friction "${mu}")
+      continue
+      ;;
     rviz:=true)
       install_args+=(--rviz)
       if [[ -z "${DISPLAY:-}" ]]; then
@@ -53,13 +64,13 @@ rm -f "${status_file}"
 if [[ "${record}" == true ]]; then
   launch_args+=(record:=true "bag:=${bag}")
 fi
-roslaunch yarn_tearing demo.launch status_file:="${status_file}" "${launch_args[@]}" || true
+roslaunch yarn_tearing "${launch_file}" status_file:="${status_file}" "${launch_args[@]}" || true
 
 demo_ok=false
 if [[ "$(cat "${status_file}" 2>/dev/null)" == 0 ]]; then
   demo_ok=true
 else
-  echo "demo.sh: the demo did not end with both yarns torn (timeout, interrupted or crashed)" >&2
+  echo "demo.sh: the demo did not end with its yarns torn (timeout, interrupted or crashed)" >&2
 fi
 rm -f "${status_file}"
 if [[ "${record}" != true ]]; then
@@ -80,7 +91,7 @@ if [[ ! -f "${bag}" ]]; then
 fi
 
 plot_ok=true
-figures="$(rosrun yarn_tearing plot_bag "${bag}" "${out}")" || plot_ok=false
+figures="$(rosrun yarn_tearing plot_bag "${plot_args[@]}" "${bag}" "${out}")" || plot_ok=false
 echo "demo bag: ${bag}"
 if [[ "${plot_ok}" == true ]]; then
   echo "demo figures: ${out}"
