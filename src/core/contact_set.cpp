@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace yarn_tearing {
 namespace {
@@ -25,7 +26,11 @@ Eigen::Vector3d orthogonal(const Eigen::Vector3d& n) {
 void ContactSet::detect(const Input& input) {
   obstacles_ = input.obstacles;
   start_ = input.start;
+  if (!contacts_.empty()) previous_.swap(contacts_);
   contacts_.clear();
+  std::sort(previous_.begin(), previous_.end(), [](const Contact& l, const Contact& r) {
+    return std::make_tuple(l.obstacle, l.a, l.b) < std::make_tuple(r.obstacle, r.a, r.b);
+  });
   const std::vector<Obstacle>& obstacles = *input.obstacles;
   const std::vector<Eigen::Vector3d>& predicted = *input.predicted;
   const std::vector<double>& w = *input.inverse_mass;
@@ -103,10 +108,19 @@ void ContactSet::add(const Input& input, std::uint32_t obstacle, std::uint32_t a
     c.anchor_b = (*input.predicted)[b] + arrival;
   }
   c.active = predicted_gap < 0.0;
-  // Friction starts as a sliding impulse of 0 (frictionless) so the touching set settles on
-  // meaningful normal forces before the stick / slip states are chosen.
-  c.sliding = c.friction > 0.0;
+  if (touching) carryFrictionStates(c);
   contacts_.push_back(c);
+}
+
+void ContactSet::carryFrictionStates(Contact& c) const {
+  // previous_ is sorted by (obstacle, a, b).
+  const auto key = [](const Contact& k) { return std::make_tuple(k.obstacle, k.a, k.b); };
+  const auto it =
+      std::lower_bound(previous_.begin(), previous_.end(), c,
+                       [&](const Contact& l, const Contact& r) { return key(l) < key(r); });
+  if (it == previous_.end() || key(*it) != key(c) || !it->active) return;
+  for (int k = 0; k < Contact::kFrictionDirections; ++k) c.friction_sign[k] = it->friction_sign[k];
+  c.friction_known = true;
 }
 
 double ContactSet::distance(const Contact& c, const Eigen::Vector3d& p,

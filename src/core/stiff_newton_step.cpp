@@ -52,10 +52,9 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
       // A point on a held vertex only (t at its end) cannot be moved: no rows.
       const bool movable_point = c.mobility(inverse_mass) > 0.0;
       normal_row_[i] = c.active && movable_point ? rows++ : -1;
-      friction_row_[i] = -1;
-      if (normal_row_[i] >= 0 && c.friction > 0.0 && !c.sliding) {
-        friction_row_[i] = rows;
-        rows += Contact::kFrictionDirections;
+      for (int k = 0; k < Contact::kFrictionDirections; ++k) {
+        const bool sticks = normal_row_[i] >= 0 && hasFriction(i, c) && c.friction_sign[k] == 0;
+        friction_row_[i][k] = sticks ? rows++ : -1;
       }
     }
   }
@@ -104,9 +103,17 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     triplets_.emplace_back(re, re, -stretch_state.shift()[e]);
     rhs_[re] = -(length - stretch_state.baseLength()[e]);
   }
+  unsymmetric_ = false;
   if (contacts != nullptr) addContactRows(*contacts, inverse_mass, position);
   matrix_.resize(rows, rows);
   matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
+  if (unsymmetric_) {
+    // Sliding friction couples its normal multiplier into the vertex rows only.
+    sliding_factorization_.lu.compute(matrix_);
+    if (sliding_factorization_.lu.info() != Eigen::Success) return false;
+    solution_ = sliding_factorization_.lu.solve(rhs_);
+    return solution_.allFinite();
+  }
   if (banded_) {
     banded_factorization_.ldlt.compute(matrix_);
     if (banded_factorization_.ldlt.info() != Eigen::Success) return false;
@@ -231,8 +238,13 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
   start_ = start;
   movable_ = &movable;
   for (std::size_t e = 0; e < edges.size(); ++e) taut[e] = taut[e] & movable[e];
-  if (contacts != nullptr) rememberImpulses(*contacts);
-  if (contacts != nullptr) sortContacts(*contacts, position.size());
+  if (contacts != nullptr) {
+    rememberImpulses(*contacts);
+    sortContacts(*contacts, position.size());
+    friction_flips_.assign(contacts->contacts().size(), 0);
+    normal_flips_.assign(contacts->contacts().size(), 0);
+    frictionless_.assign(contacts->contacts().size(), 0);
+  }
   banded_ = true;
   for (std::size_t e = 0; e < edges.size() && banded_; ++e) {
     banded_ = edges.vertex_b[e] == edges.vertex_a[e] + 1;
@@ -275,19 +287,13 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
         changed = true;
       }
     }
-    if (contacts != nullptr && pivotContacts(*contacts, inverse_mass, position, false)) {
-      changed = true;
-    }
+    if (contacts != nullptr && pivotContacts(*contacts, inverse_mass, position)) changed = true;
     if (!changed) break;
     frontier_.grow(edges, incidence, movable, stretch_, taut);
   }
   if (contacts != nullptr) {
-    // Friction states change between Newton steps only, once the taut edges and touching points
-    // have settled on this linearization: the bound comes from the normal multipliers, and
-    // switching inside the pivoting on passes whose normal forces are still wrong cycles.
     storeContactImpulses(*contacts);
     measureImpulseChange(*contacts, inverse_mass);
-    pivotContacts(*contacts, inverse_mass, position, true);
   }
   for (std::size_t v = 0; v < position.size(); ++v) {
     if (vertex_row_[v] >= 0) position[v] += solution_.segment<3>(vertex_row_[v]);
@@ -353,15 +359,25 @@ void StiffNewtonStep::addContactRows(const ContactSet& contacts,
         }
       }
     }
-    if (friction_row_[i] >= 0) {
-      const Eigen::Vector3d slip = c.point(position) - c.anchor();
-      for (int k = 0; k < Contact::kFrictionDirections; ++k) {
-        row(friction_row_[i] + k, c.tangent[k], c.tangent[k].dot(slip));
+    if (normal_row_[i] < 0 || !hasFriction(i, c)) continue;
+    // Sticking tangents hold the point where it stuck; a sliding one pushes with +-mu m_n,
+    // m_n the normal row's own multiplier: a column coupling the two (the system becomes
+    // unsymmetric, solved by LU), so that the bound is exact in every solve.
+    const Eigen::Vector3d slip = c.point(position) - c.anchor();
+    Eigen::Vector3d sliding = Eigen::Vector3d::Zero();
+    for (int k = 0; k < Contact::kFrictionDirections; ++k) {
+      if (friction_row_[i][k] >= 0) {
+        row(friction_row_[i][k], c.tangent[k], c.tangent[k].dot(slip));
+      } else {
+        sliding += (c.friction_sign[k] * c.friction) * c.tangent[k];
       }
     }
-    if (c.sliding) {
-      if (ra >= 0) rhs_.segment<3>(ra) += wa * c.friction_impulse;
-      if (rb >= 0) rhs_.segment<3>(rb) += wb * c.friction_impulse;
+    if (sliding.isZero()) continue;
+    unsymmetric_ = true;
+    const int rn = normal_row_[i];
+    for (int k = 0; k < 3; ++k) {
+      if (ra >= 0) triplets_.emplace_back(ra + k, rn, -wa * sliding[k]);
+      if (rb >= 0) triplets_.emplace_back(rb + k, rn, -wb * sliding[k]);
     }
   }
 }
@@ -369,7 +385,7 @@ void StiffNewtonStep::addContactRows(const ContactSet& contacts,
 void StiffNewtonStep::sortContacts(const ContactSet& contacts, std::size_t num_vertices) {
   const std::vector<Contact>& list = contacts.contacts();
   normal_row_.assign(list.size(), -1);
-  friction_row_.assign(list.size(), -1);
+  friction_row_.assign(list.size(), {-1, -1});
   contact_start_.assign(num_vertices + 1, 0);
   for (const Contact& c : list) ++contact_start_[std::max(c.a, c.b) + 1];
   for (std::size_t v = 0; v < num_vertices; ++v) contact_start_[v + 1] += contact_start_[v];
@@ -380,10 +396,17 @@ void StiffNewtonStep::sortContacts(const ContactSet& contacts, std::size_t num_v
   }
 }
 
-Eigen::Vector3d StiffNewtonStep::frictionImpulse(const Contact& c, int row) const {
+bool StiffNewtonStep::hasFriction(std::size_t i, const Contact& c) const {
+  return c.friction > 0.0 && c.friction_known && frictionless_[i] == 0;
+}
+
+Eigen::Vector3d StiffNewtonStep::frictionImpulse(std::size_t i, const Contact& c) const {
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
+  if (normal_row_[i] < 0 || !hasFriction(i, c)) return impulse;
+  const double bound = c.friction * solution_[normal_row_[i]];
   for (int k = 0; k < Contact::kFrictionDirections; ++k) {
-    impulse += solution_[row + k] * c.tangent[k];
+    const int r = friction_row_[i][k];
+    impulse += (r >= 0 ? solution_[r] : c.friction_sign[k] * bound) * c.tangent[k];
   }
   return impulse;
 }
@@ -396,75 +419,63 @@ Eigen::Vector3d StiffNewtonStep::pointMove(const Contact& c) const {
 }
 
 bool StiffNewtonStep::pivotContacts(ContactSet& contacts, const std::vector<double>& inverse_mass,
-                                    const std::vector<Eigen::Vector3d>& position, bool friction) {
+                                    const std::vector<Eigen::Vector3d>& position) {
   bool changed = false;
   std::vector<Contact>& list = contacts.contacts();
   for (std::size_t i = 0; i < list.size(); ++i) {
     Contact& c = list[i];
     const Eigen::Vector3d move = pointMove(c);
-    if (!friction && !c.active && c.enabled && c.mobility(inverse_mass) > 0.0) {
-      // Taken in when the step would push the point into the obstacle.
+    const double mobility = c.mobility(inverse_mass);
+    if (!c.active && c.enabled && mobility > 0.0) {
+      // Taken in when the step would push the point into the obstacle (with the friction
+      // states it had: those of the last step where it touched then, else frictionless until
+      // it has a normal force).
       if (c.gap + c.normal.dot(move) < -kSlackTolerance * c.scale) {
         c.active = true;
-        c.sliding = c.friction > 0.0;  // frictionless until the friction states are chosen
-        c.friction_impulse.setZero();
+        // A point with friction that left and came back too often in this Newton step pushes
+        // without friction for the rest of it: its friction rows made the pass cycle (a point
+        // that carries almost nothing between two that carry the wrap).
+        if (++normal_flips_[i] >= kMaxNormalFlips) frictionless_[i] = 1;
         changed = true;
       }
       continue;
     }
     // Impulse [kg m] that moves the point by kSlackTolerance of its scale: smaller multipliers
     // and friction excesses are round-off, and switching on them would only chatter.
-    const double mobility = c.mobility(inverse_mass);
     if (!c.active || !(mobility > 0.0) || normal_row_[i] < 0) continue;
     const double negligible = kSlackTolerance * c.scale / mobility;
     const double normal = solution_[normal_row_[i]];
-    if (!friction && normal < -negligible) {
+    if (normal < -negligible) {
       // It would pull: the point leaves the obstacle.
       c.active = false;
+      ++normal_flips_[i];
       c.friction_impulse.setZero();
       changed = true;
       continue;
     }
-    if (!(c.friction > 0.0)) continue;
+    if (!hasFriction(i, c)) continue;
     const double bound = c.friction * std::max(normal, 0.0);
-    if (!friction) {
-      // A sliding point's friction is mu times its normal force of this very solve: re-solved
-      // until the two agree (the direction is settled between Newton steps).
-      const double magnitude = c.friction_impulse.norm();
-      if (c.sliding && magnitude > 0.0 &&
-          std::abs(magnitude - bound) > kFrictionTolerance * bound + negligible) {
-        c.friction_impulse *= bound / magnitude;
+    // A point whose states flipped too often in this Newton step only starts to slide
+    // (kMaxFrictionFlips): its friction never exceeds the bound.
+    const bool may_stick = friction_flips_[i] < kMaxFrictionFlips;
+    // The point's slip over the step after this solve, from where it stuck [m].
+    const Eigen::Vector3d slip = c.point(position) + move - c.anchor();
+    for (int k = 0; k < Contact::kFrictionDirections; ++k) {
+      std::int8_t& sign = c.friction_sign[k];
+      const int r = friction_row_[i][k];
+      if (sign == 0) {
+        // Sticking needs more than the bound: it slides, friction at the bound against the pull.
+        if (r >= 0 && std::abs(solution_[r]) > bound * (1.0 + kFrictionMargin) + negligible) {
+          sign = solution_[r] > 0.0 ? 1 : -1;
+          ++friction_flips_[i];
+          changed = true;
+        }
+      } else if (may_stick && sign * c.tangent[k].dot(slip) > kSlackTolerance * c.scale) {
+        // Friction would drive the point instead of opposing its slip: it sticks.
+        sign = 0;
+        ++friction_flips_[i];
         changed = true;
       }
-      continue;
-    }
-    if (!c.sliding) {
-      const Eigen::Vector3d held = frictionImpulse(c, friction_row_[i]);
-      if (held.norm() > bound * (1.0 + kFrictionMargin) + negligible) {
-        c.sliding = true;
-        ++c.slide_starts;
-        c.friction_impulse = bound * held.normalized();
-        changed = true;
-      }
-      continue;
-    }
-    // Sliding: friction opposes the slip of the point from where it stuck.
-    Eigen::Vector3d slip = c.point(position) + move - c.anchor();
-    slip -= c.normal.dot(slip) * c.normal;
-    const bool slipping = slip.norm() > kSlackTolerance * c.scale;
-    // A point that has started to slide too often in this step slides on, its friction at the
-    // bound in its last direction (see kMaxSlideStarts).
-    if (c.slide_starts >= kMaxSlideStarts) continue;
-    if (!slipping || slip.dot(c.friction_impulse) >= 0.0) {
-      // The slip turned round or stopped: it sticks (its rows take over the impulse).
-      c.sliding = false;
-      changed = true;
-      continue;
-    }
-    const Eigen::Vector3d impulse = -bound * slip.normalized();
-    if ((impulse - c.friction_impulse).norm() > kFrictionTolerance * bound + negligible) {
-      c.friction_impulse = impulse;
-      changed = true;
     }
   }
   return changed;
@@ -495,11 +506,8 @@ void StiffNewtonStep::storeContactImpulses(ContactSet& contacts) const {
   for (std::size_t i = 0; i < list.size(); ++i) {
     Contact& c = list[i];
     c.normal_multiplier = normal_row_[i] >= 0 ? std::max(solution_[normal_row_[i]], 0.0) : 0.0;
-    if (friction_row_[i] >= 0) {
-      c.friction_impulse = frictionImpulse(c, friction_row_[i]);
-    } else if (!c.sliding) {
-      c.friction_impulse.setZero();
-    }
+    c.friction_impulse = frictionImpulse(i, c);
+    c.friction_known = c.friction_known || c.normal_multiplier > 0.0;
   }
 }
 

@@ -5,6 +5,9 @@
 // converged.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "wrap_support.hpp"
 
 namespace yarn_tearing::test {
@@ -72,6 +75,48 @@ TEST_P(FrictionlessWrap, SlidesTowardsTheHarderPull) {
 INSTANTIATE_TEST_SUITE_P(Angles, FrictionlessWrap,
                          ::testing::Values(WrapCase{kPi / 2.0, 1e-3}, WrapCase{kPi, 1e-3},
                                            WrapCase{2.0 * kPi, 1e-3}, WrapCase{kPi, 1e-4}));
+
+struct FrictionCase {
+  double wrap_angle;  ///< [rad]
+  double mu;          ///< [-]
+  double dt;          ///< [s]
+};
+
+class FrictionWrap : public ::testing::TestWithParam<FrictionCase> {};
+
+// The capstan law from below: end B's pull rising at 2 N/s from T1 to 97 % of T1 e^(mu theta)
+// does not move end A (it holds), every step converges, and the tails carry T1 and T2. The wrap
+// is laid on the post and loaded without friction (the sudden load of an unloaded yarn is a
+// violent transient, 10^7 m/s^2 on its end vertices), then friction acts.
+TEST_P(FrictionWrap, HoldsUpTo97PercentOfTheCapstanLaw) {
+  const FrictionCase c = GetParam();
+  PulledWrap pulled(WrapCase{c.wrap_angle, c.dt});
+  pulled.sim.setObstacles({postAlongY(kPostRadius, c.mu)});
+  const double top = 0.97 * std::exp(c.mu * c.wrap_angle) * kT1;  // [N]
+  const double rate = 2.0;                                        // [N/s]
+  const Eigen::Vector3d start = pulled.sim.scene().vertices.position[0];
+  const int steps = static_cast<int>(std::ceil((top - kT1) / rate / c.dt));
+  for (int i = 1; i <= steps; ++i) {
+    const double t2 = std::min(kT1 + rate * i * c.dt, top);
+    pulled.sim.setAppliedForce(pulled.last, t2 * pulled.wrap.tail_direction_b);
+    pulled.sim.step();
+    ASSERT_TRUE(pulled.sim.lastHealth().projection_converged) << "T2 / T1 = " << t2 / kT1;
+    ASSERT_LE(pulled.sim.lastHealth().max_penetration, 1e-6) << "T2 / T1 = " << t2 / kT1;
+  }
+  // Sliding would take end A round the post by millimetres per millisecond; holding, it only
+  // follows the wrapped yarn's elastic stretch (some 5 um at pi).
+  const double moved = (pulled.sim.scene().vertices.position[0] - start).norm();
+  EXPECT_LT(moved, 2e-5) << "end A moved [m]";
+  const EdgeSet& edges = pulled.sim.scene().edges;
+  EXPECT_NEAR(edges.tension.front(), kT1, 0.005 * kT1);
+  EXPECT_NEAR(edges.tension.back(), top, 0.005 * top);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Angles, FrictionWrap,
+    ::testing::Values(FrictionCase{kPi / 2.0, 0.1, 1e-3}, FrictionCase{kPi / 2.0, 0.3, 1e-3},
+                      FrictionCase{kPi, 0.1, 1e-3}, FrictionCase{kPi, 0.3, 1e-3},
+                      FrictionCase{2.0 * kPi, 0.1, 1e-3}, FrictionCase{kPi, 0.3, 1e-4}));
 
 }  // namespace
 }  // namespace yarn_tearing::test

@@ -15,11 +15,11 @@ namespace yarn_tearing {
 /// in the projection are of the length constraints' form (C(x) <= 0 or = 0, a multiplier m
 /// [kg m] = force dt^2, the vertices moved by -W grad C m):
 ///   normal:   C_n = -(distance(p) - r) <= 0,  m_n >= 0 (pushes out, never pulls);
-///   friction: C_k = -tau_k . (p - anchor) = 0 for two tangents tau_k while it sticks
-///             (|m_t| <= mu m_n); once |m_t| would exceed mu m_n it slides, and friction is the
-///             known impulse mu m_n against the slip (Coulomb: static = kinetic). The same rows
-///             at a vertex and at a segment point (a known impulse moved between Newton steps
-///             to the one that holds each segment point, all at once, diverged on a wrap).
+///   friction: C_k = -tau_k . (p - anchor) = 0 along each of two tangents tau_k while it
+///             sticks along it (|m_k| <= mu m_n); once |m_k| would exceed mu m_n it slides along
+///             tau_k, and friction is the known impulse +-mu m_n against the slip (Coulomb,
+///             static = kinetic, on a pyramid: each tangent bounded on its own). The same rows at
+///             a vertex and at a segment point.
 struct Contact {
   std::uint32_t a = 0;         ///< first vertex (global id)
   std::uint32_t b = 0;         ///< second vertex (= a for a vertex contact)
@@ -42,16 +42,21 @@ struct Contact {
   bool active = false;          ///< normal row taken as an equality
   /// False while a segment point sits at the segment's end, where its vertex's contact is.
   bool enabled = true;
-  bool sliding = false;            ///< friction is the known sliding impulse
-  int slide_starts = 0;            ///< how often it started to slide in this step
-  double normal_multiplier = 0.0;  ///< m_n [kg m]
+  /// Per tangent: 0 while it sticks along it (a friction row), +1 or -1 while it slides with
+  /// the known friction +-mu m_n along tangent[k] (on the yarn). Kept from step to step for the
+  /// same point (ContactSet::detect), so a slipping zone starts the step as it ended the last.
+  std::int8_t friction_sign[2] = {0, 0};
+  /// False for a point new in this step until its first Newton step has given it a normal
+  /// force: friction then has a meaningful bound (and sticks from the next Newton step on).
+  bool friction_known = false;
+  double normal_multiplier = 0.0;                              ///< m_n [kg m]
   Eigen::Vector3d friction_impulse = Eigen::Vector3d::Zero();  ///< on the yarn [kg m]
 
   /// The contact point of positions `x` [m].
   Eigen::Vector3d point(const std::vector<Eigen::Vector3d>& x) const {
     return (1.0 - t) * x[a] + t * x[b];
   }
-  /// Friction rows while it sticks (two tangents).
+  /// Tangents with a friction row or a sliding impulse each.
   static constexpr int kFrictionDirections = 2;
   /// How far the point moves per unit impulse on it [1/kg]: (1 - t)^2 w_a + t^2 w_b.
   double mobility(const std::vector<double>& inverse_mass) const {
@@ -102,8 +107,12 @@ class ContactSet {
   /// Adds `factor` w_v times each contact's impulse share to `sum` per vertex.
   void addImpulses(const std::vector<double>& inverse_mass, double factor,
                    std::vector<Eigen::Vector3d>& sum) const;
-  /// Forgets the impulses of the last step (no contact).
-  void clear() { contacts_.clear(); }
+  /// Forgets the contacts of the last step (no contact in this one); the next detect() still
+  /// carries their friction states, a second clear() forgets those too.
+  void clear() {
+    previous_.swap(contacts_);
+    contacts_.clear();
+  }
 
   /// Positions at the step's start given to the last detect() [m].
   const std::vector<Eigen::Vector3d>& start() const { return *start_; }
@@ -118,9 +127,14 @@ class ContactSet {
   double distance(const Contact& c, const Eigen::Vector3d& p, Eigen::Vector3d& normal) const;
 
   const std::vector<Obstacle>* obstacles_ = nullptr;
+  /// The friction states of the last step's point
+  /// on the same segment (or vertex) and obstacle, if it had one.
+  void carryFrictionStates(Contact& c) const;
+
   const std::vector<Eigen::Vector3d>* start_ = nullptr;
   std::vector<Contact> contacts_;
-  std::vector<double> scale_;  ///< per vertex: its longest edge [m]
+  std::vector<Contact> previous_;  ///< the last step's contacts, while detecting [-]
+  std::vector<double> scale_;      ///< per vertex: its longest edge [m]
 };
 
 }  // namespace yarn_tearing

@@ -3,6 +3,8 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -88,12 +90,15 @@ class StiffNewtonStep {
   void sortContacts(const ContactSet& contacts, std::size_t num_vertices);
   /// Writes each contact's normal multiplier and friction impulse from the last solution.
   void storeContactImpulses(ContactSet& contacts) const;
-  /// Pivots the contacts' normal rows, or with `friction` their friction states, after a pass
-  /// (ContactSet); true when any changed.
+  /// Pivots the contacts' normal rows and the stick / slide state of each friction tangent
+  /// after a pass (a box LCP per tangent, its bound mu m_n from the same pass, ContactSet);
+  /// true when any changed or a sliding bound moved.
   bool pivotContacts(ContactSet& contacts, const std::vector<double>& inverse_mass,
-                     const std::vector<Eigen::Vector3d>& position, bool friction);
-  /// The friction impulse [kg m] of sticking contact `c` whose first friction row is `row`.
-  Eigen::Vector3d frictionImpulse(const Contact& c, int row) const;
+                     const std::vector<Eigen::Vector3d>& position);
+  /// Whether contact `i` (`c`) has friction rows or sliding friction in this apply.
+  bool hasFriction(std::size_t i, const Contact& c) const;
+  /// The friction impulse [kg m] on the yarn of contact `i` (`c`) in the last solution.
+  Eigen::Vector3d frictionImpulse(std::size_t i, const Contact& c) const;
   /// Keeps each contact's impulse before the solve (impulseChange()).
   void rememberImpulses(const ContactSet& contacts);
   /// Sets impulse_change_ from the impulses stored after the solve.
@@ -119,6 +124,16 @@ class StiffNewtonStep {
         ldlt;
   };
   BandedFactorization banded_factorization_;
+  /// LU for systems with sliding friction (unsymmetric), kept for its storage; copies start
+  /// without one.
+  struct SlidingFactorization {
+    SlidingFactorization() = default;
+    SlidingFactorization(const SlidingFactorization&) {}
+    SlidingFactorization& operator=(const SlidingFactorization&) { return *this; }
+    Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+  };
+  SlidingFactorization sliding_factorization_;
+  bool unsymmetric_ = false;  ///< the assembled system has sliding friction columns
   /// Factorization for other graphs, its symbolic analysis kept while the pattern holds.
   PatternCachedLdlt general_factorization_;
   double impulse_change_ = 0.0;                    ///< see impulseChange()
@@ -144,17 +159,26 @@ class StiffNewtonStep {
   std::vector<std::uint32_t> contact_start_;
   std::vector<std::uint32_t> contact_fill_;  ///< scratch of sortContacts
   std::vector<int> normal_row_;              ///< per contact: its normal row, -1 when inactive
-  std::vector<int> friction_row_;            ///< per contact: its first friction row, -1 when none
+  /// Per contact and tangent: its friction row while it sticks, -1 otherwise.
+  std::vector<std::array<int, Contact::kFrictionDirections>> friction_row_;
+  /// Per contact: how often its tangents switched between sticking and sliding in this apply.
+  std::vector<int> friction_flips_;
+  /// Per contact: how often its normal row was released or taken in in this apply.
+  std::vector<int> normal_flips_;
+  /// Per contact: pushes without friction for the rest of this apply (kMaxNormalFlips).
+  std::vector<std::uint8_t> frictionless_;
   /// Compliance of contact rows relative to the row's own w sum [-]: keeps the system
   /// quasi-definite where contact rows are (nearly) dependent, e.g. two obstacles on a vertex.
   static constexpr double kContactCompliance = 1e-12;
   /// Relative margin on the friction bound, so a point right at it does not flip on round-off.
   static constexpr double kFrictionMargin = 1e-9;
-  /// Times a contact may start sliding within one step; after that it slides for the rest of
-  /// the step at the bound mu m_n, in the direction it last had (a point right at its bound,
-  /// the front of a slipping zone, would otherwise flip for ever, each state sending it to the
-  /// other). Its friction never exceeds the bound; its direction may lag the slip.
-  static constexpr int kMaxSlideStarts = 3;
+  /// Switches of a contact's tangents between sticking and sliding within one Newton step;
+  /// after that a tangent may still start to slide but not stick again until the next Newton
+  /// step (against cycling; the friction never exceeds its bound).
+  static constexpr int kMaxFrictionFlips = 4;
+  /// Releases and take-ins of a contact's normal row within one Newton step after which it
+  /// pushes without friction until the next Newton step (against cycling).
+  static constexpr int kMaxNormalFlips = 4;
   /// Relative change of a sliding impulse that needs another Newton step [-] (its bound and
   /// direction follow the iterate, converging with it).
   static constexpr double kFrictionTolerance = 1e-6;
