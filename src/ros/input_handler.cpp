@@ -56,7 +56,7 @@ void InputHandler::handleAppliedForce(const AppliedForce& msg, Simulator& simula
   requireBoundedVector(toEigen(msg.force_rate), input_bounds::kMaxForceRate, "force_rate", "N/s");
   requireDuration(msg.duration, "duration");
   requireDuration(msg.ramp_duration, "ramp_duration");
-  const std::uint32_t vertex = lookupVertex(simulator.scene(), msg.yarn, msg.vertex);
+  const std::uint32_t vertex = lookupVertex(simulator.scene(), msg.yarn, VertexAddress::of(msg));
   ActiveForce applied;
   applied.force =
       frames_.rotateToFixedFrame(toEigen(msg.force), msg.header.frame_id, msg.header.stamp);
@@ -74,11 +74,11 @@ void InputHandler::handleAppliedForce(const AppliedForce& msg, Simulator& simula
 }
 
 void InputHandler::handleGrasp(const Grasp& msg, Simulator& simulator) {
-  const std::uint32_t vertex = lookupVertex(simulator.scene(), msg.yarn, msg.vertex);
+  const std::uint32_t vertex = lookupVertex(simulator.scene(), msg.yarn, VertexAddress::of(msg));
   if (msg.release) {
     if (grasps_.erase(vertex) == 0) {
-      throw InputRejected(RefusalReason::kNotGrasped,
-                          "vertex " + std::to_string(msg.vertex) + " is not grasped");
+      throw InputRejected(RefusalReason::kNotGrasped, VertexAddress::of(msg).describe() + " of '" +
+                                                          clipped(msg.yarn) + "' is not grasped");
     }
     simulator.releaseVertex(vertex);
     return;
@@ -88,7 +88,7 @@ void InputHandler::handleGrasp(const Grasp& msg, Simulator& simulator) {
   }
   GraspTarget target;
   target.frame = msg.target_frame;
-  target.label = "vertex " + std::to_string(msg.vertex) + " of '" + clipped(msg.yarn) + "'";
+  target.label = VertexAddress::of(msg).describe() + " of '" + clipped(msg.yarn) + "'";
   target.to = frames_.originInFixedFrame(msg.target_frame);
   const auto existing = grasps_.find(vertex);
   const Eigen::Vector3d& position = simulator.scene().vertices.position[vertex];

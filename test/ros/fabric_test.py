@@ -52,7 +52,8 @@ class FabricTest(unittest.TestCase):
         self.assertTrue(support.wait_until(lambda: mesh() is not None, 10.0), "no cloth marker")
         self.assertEqual(len(mesh().points), 6 * (ends - 1) * (picks - 1))
 
-        # A grasp on the free corner (vertex -1) follows the gripper frame.
+        # A grasp on the free corner (row -1, column -1: the last row's last vertex) follows the
+        # gripper frame.
         corner = ends * picks - 1
         gripper = support.MovingFrame(GRIPPER_FRAME, lambda _: GRIP_AT)
         grasp_pub = rospy.Publisher("grasp", Grasp, queue_size=10)
@@ -63,7 +64,8 @@ class FabricTest(unittest.TestCase):
         while not grasped() and time.monotonic() < deadline:
             msg = Grasp()
             msg.header.stamp = rospy.Time.now()
-            msg.yarn, msg.vertex, msg.target_frame = fabric["name"], -1, GRIPPER_FRAME
+            msg.yarn, msg.target_frame = fabric["name"], GRIPPER_FRAME
+            msg.by_row_and_column, msg.row, msg.column = True, -1, -1
             grasp_pub.publish(msg)
             time.sleep(0.2)
         self.assertTrue(grasped(), "grasp not accepted within 10 s")
