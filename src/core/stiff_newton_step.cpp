@@ -237,6 +237,7 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
                             const StartDirections& start) {
   start_ = start;
   movable_ = &movable;
+  ++newton_steps_;
   for (std::size_t e = 0; e < edges.size(); ++e) taut[e] = taut[e] & movable[e];
   if (contacts != nullptr) {
     rememberImpulses(*contacts);
@@ -457,7 +458,8 @@ bool StiffNewtonStep::pivotContacts(ContactSet& contacts, const std::vector<doub
     const double bound = c.friction * std::max(normal, 0.0);
     // A point whose states flipped too often in this Newton step only starts to slide
     // (kMaxFrictionFlips): its friction never exceeds the bound.
-    const bool may_stick = friction_flips_[i] < kMaxFrictionFlips;
+    const bool may_stick =
+        friction_flips_[i] < kMaxFrictionFlips && newton_steps_ <= kStickingNewtonSteps;
     // The point's slip over the step after this solve, from where it stuck [m].
     const Eigen::Vector3d slip = c.point(position) + move - c.anchor();
     for (int k = 0; k < Contact::kFrictionDirections; ++k) {

@@ -1,8 +1,8 @@
 // A yarn wrapped round a post (no gravity), one end pulled with T1 and the other with T2: the
 // capstan law T2 / T1 = e^(mu theta) at the onset of sliding. Without friction (mu = 0) the
 // yarn holds still with T2 = T1 at any wrap angle, both sides carrying T1, and slides towards
-// the end pulled 1 % harder. Segment contacts (2 mm chords on a 5 mm post), every step
-// converged.
+// the end pulled 1 % harder (2 mm chords on a 5 mm post). With friction (1 mm chords) it holds
+// at 97 % of T1 e^(mu theta) and slides at 103 %. Segment contacts, every step converged.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,8 +17,9 @@ constexpr double kPostRadius = 5.0e-3;  ///< [m]
 constexpr double kT1 = 0.5;             ///< [N]
 
 struct WrapCase {
-  double wrap_angle;  ///< [rad]
-  double dt;          ///< [s]
+  double wrap_angle;      ///< [rad]
+  double dt;              ///< [s]
+  double max_bend = 0.4;  ///< largest turn of the yarn at one vertex [rad] (chord 2 mm at 0.4)
 };
 
 /// A wrapped yarn, both ends pulled with T1 and settled for 0.1 s (light air damping takes out
@@ -26,7 +27,7 @@ struct WrapCase {
 /// (every step must converge) and returns how far end A went towards the post [m].
 struct PulledWrap {
   explicit PulledWrap(const WrapCase& c)
-      : wrap(wrappedYarn(hangingYarn(), kPostRadius, c.wrap_angle, 10)),
+      : wrap(wrappedYarn(hangingYarn(), kPostRadius, c.wrap_angle, 10, c.max_bend)),
         sim(dampedParameters(c.dt), wrap.scene),
         last(static_cast<std::uint32_t>(sim.scene().vertices.size() - 1)) {
     sim.setObstacles({postAlongY(kPostRadius, 0.0)});
@@ -82,27 +83,40 @@ struct FrictionCase {
   double dt;          ///< [s]
 };
 
-class FrictionWrap : public ::testing::TestWithParam<FrictionCase> {};
+class FrictionWrap : public ::testing::TestWithParam<FrictionCase> {
+ protected:
+  /// The wrap laid on the post with 1 mm chords (bends of 0.2 rad) and loaded without friction
+  /// (the sudden load of an unloaded yarn is a violent transient, 10^7 m/s^2 on its end
+  /// vertices), then friction acts and end B's pull rises at 2 N/s to `top` [N]; every step
+  /// converges without penetration.
+  static void holdUpTo(PulledWrap& pulled, const FrictionCase& c, double top) {
+    pulled.sim.setObstacles({postAlongY(kPostRadius, c.mu)});
+    const double rate = 2.0;  // [N/s]
+    const int steps = static_cast<int>(std::ceil((top - kT1) / rate / c.dt));
+    for (int i = 1; i <= steps; ++i) {
+      const double t2 = std::min(kT1 + rate * i * c.dt, top);
+      pulled.sim.setAppliedForce(pulled.last, t2 * pulled.wrap.tail_direction_b);
+      pulled.sim.step();
+      EXPECT_TRUE(pulled.sim.lastHealth().projection_converged) << "T2 / T1 = " << t2 / kT1;
+      EXPECT_LE(pulled.sim.lastHealth().max_penetration, 1e-6) << "T2 / T1 = " << t2 / kT1;
+      if (::testing::Test::HasFailure()) break;
+    }
+  }
+  /// Bends of the wrap with friction [rad]: a polygon of chords lets go below e^(mu theta) by
+  /// an amount that falls as the bend squared (README, departure 9: at 2 pi, mu = 0.3, 5.1 % at
+  /// 0.4 rad, 1.4 % at 0.2, 0.4 % at 0.1).
+  static constexpr double kFineBend = 0.2;
+};
 
 // The capstan law from below: end B's pull rising at 2 N/s from T1 to 97 % of T1 e^(mu theta)
-// does not move end A (it holds), every step converges, and the tails carry T1 and T2. The wrap
-// is laid on the post and loaded without friction (the sudden load of an unloaded yarn is a
-// violent transient, 10^7 m/s^2 on its end vertices), then friction acts.
+// does not move end A (it holds), every step converges, and the tails carry T1 and T2.
 TEST_P(FrictionWrap, HoldsUpTo97PercentOfTheCapstanLaw) {
   const FrictionCase c = GetParam();
-  PulledWrap pulled(WrapCase{c.wrap_angle, c.dt});
-  pulled.sim.setObstacles({postAlongY(kPostRadius, c.mu)});
   const double top = 0.97 * std::exp(c.mu * c.wrap_angle) * kT1;  // [N]
-  const double rate = 2.0;                                        // [N/s]
+  PulledWrap pulled(WrapCase{c.wrap_angle, c.dt, kFineBend});
   const Eigen::Vector3d start = pulled.sim.scene().vertices.position[0];
-  const int steps = static_cast<int>(std::ceil((top - kT1) / rate / c.dt));
-  for (int i = 1; i <= steps; ++i) {
-    const double t2 = std::min(kT1 + rate * i * c.dt, top);
-    pulled.sim.setAppliedForce(pulled.last, t2 * pulled.wrap.tail_direction_b);
-    pulled.sim.step();
-    ASSERT_TRUE(pulled.sim.lastHealth().projection_converged) << "T2 / T1 = " << t2 / kT1;
-    ASSERT_LE(pulled.sim.lastHealth().max_penetration, 1e-6) << "T2 / T1 = " << t2 / kT1;
-  }
+  holdUpTo(pulled, c, top);
+  ASSERT_FALSE(HasFailure());
   // Sliding would take end A round the post by millimetres per millisecond; holding, it only
   // follows the wrapped yarn's elastic stretch (some 5 um at pi).
   const double moved = (pulled.sim.scene().vertices.position[0] - start).norm();
@@ -112,11 +126,46 @@ TEST_P(FrictionWrap, HoldsUpTo97PercentOfTheCapstanLaw) {
   EXPECT_NEAR(edges.tension.back(), top, 0.005 * top);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Angles, FrictionWrap,
+// The capstan law from above: held at 97 %, end B pulled with 103 % of T1 e^(mu theta) slides
+// the wrap round the post (end A moves by more than 1 mm within 5 ms), every step converging,
+// and friction takes at least the law's share of the work: with end A moved by s, the
+// obstacle's friction dissipates at least (e^(mu theta) - 1) T1 s (the tension at the wrap's A
+// side is at least T1 and grows along it at least as e^(mu phi)), so the yarn's kinetic energy
+// is at most (T2 - T1 e^(mu theta)) s (air damping and stretch take more).
+class FrictionSlide : public FrictionWrap {};
+
+TEST_P(FrictionSlide, SlidesAbove103PercentOfTheCapstanLaw) {
+  const FrictionCase c = GetParam();
+  const double law = std::exp(c.mu * c.wrap_angle);
+  PulledWrap pulled(WrapCase{c.wrap_angle, c.dt, kFineBend});
+  holdUpTo(pulled, c, 0.97 * law * kT1);
+  ASSERT_FALSE(HasFailure());
+  const double t2 = 1.03 * law * kT1;  // [N]
+  pulled.sim.setAppliedForce(pulled.last, t2 * pulled.wrap.tail_direction_b);
+  const Eigen::Vector3d start = pulled.sim.scene().vertices.position[0];
+  double moved = 0.0;  // [m]
+  const int steps = static_cast<int>(std::lround(5e-3 / c.dt));
+  for (int i = 0; i < steps && moved <= 1e-3; ++i) {
+    pulled.sim.step();
+    ASSERT_TRUE(pulled.sim.lastHealth().projection_converged) << "step " << i;
+    ASSERT_LE(pulled.sim.lastHealth().max_penetration, 1e-6) << "step " << i;
+    moved = (pulled.sim.scene().vertices.position[0] - start).dot(-pulled.wrap.tail_direction_a);
+  }
+  EXPECT_GT(moved, 1e-3) << "end A moved [m]";
+  EXPECT_LE(kineticEnergy(pulled.sim), (t2 - law * kT1) * moved) << "end A moved " << moved;
+}
+
+/// The six cases of issue 13 at dt = 1e-3.
+const auto kCapstanCases =
     ::testing::Values(FrictionCase{kPi / 2.0, 0.1, 1e-3}, FrictionCase{kPi / 2.0, 0.3, 1e-3},
                       FrictionCase{kPi, 0.1, 1e-3}, FrictionCase{kPi, 0.3, 1e-3},
-                      FrictionCase{2.0 * kPi, 0.1, 1e-3}, FrictionCase{kPi, 0.3, 1e-4}));
+                      FrictionCase{2.0 * kPi, 0.1, 1e-3}, FrictionCase{2.0 * kPi, 0.3, 1e-3});
+INSTANTIATE_TEST_SUITE_P(Angles, FrictionWrap, kCapstanCases);
+INSTANTIATE_TEST_SUITE_P(SmallStep, FrictionWrap,
+                         ::testing::Values(FrictionCase{kPi, 0.3, 1e-4},
+                                           FrictionCase{2.0 * kPi, 0.3, 1e-4}));
+// Sliding at dt = 1e-4 is not reached yet (README, Known limits).
+INSTANTIATE_TEST_SUITE_P(Angles, FrictionSlide, kCapstanCases);
 
 }  // namespace
 }  // namespace yarn_tearing::test

@@ -65,6 +65,8 @@ class StiffNewtonStep {
   /// its friction bound may flip between sticking and sliding with the same impulse: the flags
   /// alone would never settle).
   double impulseChange() const { return impulse_change_; }
+  /// Starts a projection's Newton steps: counts them from here (kStickingNewtonSteps).
+  void beginProjection() { newton_steps_ = 0; }
 
  private:
   /// Whether edge e's force acts on its end b (or a) along its start direction.
@@ -136,7 +138,12 @@ class StiffNewtonStep {
   bool unsymmetric_ = false;  ///< the assembled system has sliding friction columns
   /// Factorization for other graphs, its symbolic analysis kept while the pattern holds.
   PatternCachedLdlt general_factorization_;
-  double impulse_change_ = 0.0;                    ///< see impulseChange()
+  double impulse_change_ = 0.0;  ///< see impulseChange()
+  int newton_steps_ = 0;         ///< Newton steps since beginProjection() [-]
+  /// Newton steps of a projection in which a sliding tangent may stick again; after them
+  /// sliding is final for the rest of the projection (against a cycle of two Newton iterates,
+  /// a point sticking in one and sliding in the next) [-].
+  static constexpr int kStickingNewtonSteps = 10;
   std::vector<Eigen::Vector3d> previous_impulse_;  ///< per contact, before the solve [kg m]
   std::vector<int> vertex_row_;  ///< first row of each free vertex, -1 for supports
   std::vector<int> edge_row_;    ///< row of each taut edge, -1 otherwise
