@@ -27,12 +27,64 @@ ProjectionResult LengthConstraintProjection::project(
   multiplier_.assign(q, 0.0);
   // Contacts are rows of the Newton steps only: Gauss-Seidel is left to contact-free scenes.
   if (contacts != nullptr && contacts->empty()) contacts = nullptr;
+  ProjectionResult resting;
+  if (contacts != nullptr && projectContactsFast(position, vertices, edges, limits, parameters,
+                                                 gram, *contacts, resting)) {
+    return resting;
+  }
   const ProjectionResult result =
       parameters.projection_method == ProjectionMethod::kGaussSeidel && contacts == nullptr
           ? projectGaussSeidel(position, edges, parameters)
           : projectFast(position, edges, parameters, gram, contacts, step_start);
   holdEdgesBetweenSupports(position, edges);
   return result;
+}
+
+bool LengthConstraintProjection::projectContactsFast(
+    std::vector<Eigen::Vector3d>& position, const VertexSet& vertices, const EdgeSet& edges,
+    const EdgeStretchLimits& limits, const SimulationParameters& parameters, EdgeGramSolver& gram,
+    ContactSet& contacts, ProjectionResult& result) {
+  if (parameters.projection_method != ProjectionMethod::kFastProjection) return false;
+  resting_.select(contacts, inverse_mass_);
+  if (!fast_rows_.select(contacts, resting_.handled(), inverse_mass_)) return false;
+  // What a failed guess must give back to the full solve: the prediction and the warm starts.
+  resting_fallback_.position = position;
+  resting_fallback_.last_multiplier = last_multiplier_;
+  resting_fallback_.was_taut = was_taut_;
+  resting_fallback_.last_stiffness = last_stiffness_;
+  resting_fallback_.last_time_step2 = last_time_step2_;
+  resting_fallback_.newton_first_next = newton_first_next_;
+  // The stuck vertices become supports where they stuck; final directions everywhere, as the
+  // full solve with contacts.
+  resting_.hold(position, inverse_mass_);
+  fast_contacts_ = fast_rows_.empty() ? nullptr : &contacts;
+  result = projectFast(position, edges, parameters, gram, nullptr, nullptr);
+  fast_contacts_ = nullptr;
+  holdEdgesBetweenSupports(position, edges);
+  for (std::size_t v = 0; v < vertices.size(); ++v) inverse_mass_[v] = vertices.inverseMass(v);
+  if (result.converged && fast_rows_.frictionHolds(contacts) &&
+      resting_.accept(contacts, position, resting_fallback_.position, inverse_mass_, edges,
+                      multiplier_, parameters.constraint_tolerance)) {
+    result.max_penetration = contacts.maxPenetration();
+    return true;
+  }
+  resting_.restore(contacts);
+  position = resting_fallback_.position;
+  last_multiplier_.swap(resting_fallback_.last_multiplier);
+  was_taut_.swap(resting_fallback_.was_taut);
+  last_stiffness_.swap(resting_fallback_.last_stiffness);
+  last_time_step2_ = resting_fallback_.last_time_step2;
+  newton_first_next_ = resting_fallback_.newton_first_next;
+  stretch_state_.reset(edges, limits, parameters.time_step);
+  multiplier_.assign(edges.size(), 0.0);
+  return false;
+}
+
+void LengthConstraintProjection::linearizeFastRows(const std::vector<Eigen::Vector3d>& position,
+                                                   ProjectionResult& result) {
+  fast_contacts_->linearize(position);
+  fast_rows_.linearize(*fast_contacts_, position);
+  result.max_penetration = fast_contacts_->maxPenetration();
 }
 
 void LengthConstraintProjection::holdEdgesBetweenSupports(
@@ -188,12 +240,17 @@ double LengthConstraintProjection::evaluate(const std::vector<Eigen::Vector3d>& 
 
 void LengthConstraintProjection::multiplyGram(const EdgeSet& edges,
                                               const std::vector<double>& multiplier,
-                                              std::vector<double>& product) {
+                                              std::vector<double>& product,
+                                              const std::vector<double>* row_multiplier) {
   for (Eigen::Vector3d& p : vertex_sum_) p.setZero();
   for (std::size_t e = 0; e < edges.size(); ++e) {
     if (!candidate_[e] || multiplier[e] == 0.0) continue;
     vertex_sum_[edges.vertex_a[e]] -= multiplier[e] * direction_[e];
     vertex_sum_[edges.vertex_b[e]] += multiplier[e] * direction_[e];
+  }
+  if (fast_contacts_ != nullptr) {
+    fast_rows_.addGradients(*row_multiplier, vertex_sum_);
+    fast_rows_.multiply(inverse_mass_, vertex_sum_, row_product_);
   }
   for (std::size_t e = 0; e < edges.size(); ++e) {
     if (!candidate_[e]) continue;
@@ -214,8 +271,12 @@ void LengthConstraintProjection::solveComplementarity(const EdgeSet& edges, Edge
   frontier_.reset(edges.size());
   for (int pass = 0; pass < kMaxPivotingPasses; ++pass) {
     for (std::size_t e = 0; e < edges.size(); ++e) step_[e] = active_[e] ? target_[e] : 0.0;
-    gram.solve(edges, system, step_);
-    multiplyGram(edges, step_, product_);
+    if (fast_contacts_ != nullptr) {
+      fast_rows_.solve(edges, gram, system, inverse_mass_, step_);
+    } else {
+      gram.solve(edges, system, step_);
+    }
+    multiplyGram(edges, step_, product_, &fast_rows_.passMultiplier());
     frontier_.beginPass(candidate_, active_, step_);
     bool changed = false;
     for (std::size_t e = 0; e < edges.size(); ++e) {
@@ -238,6 +299,9 @@ void LengthConstraintProjection::solveComplementarity(const EdgeSet& edges, Edge
         frontier_.joined(e);
         changed = true;
       }
+    }
+    if (fast_contacts_ != nullptr && fast_rows_.pivot(row_product_, slack_tolerance_)) {
+      changed = true;
     }
     if (!changed) return;
     frontier_.grow(edges, gram.incidence(), candidate_, stretch_, active_);
@@ -275,6 +339,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
     contacts->linearize(position);
     result.max_penetration = contacts->maxPenetration();
   }
+  if (fast_contacts_ != nullptr) linearizeFastRows(position, result);
   start_at_a_.assign(edges.size(), 0);
   start_at_b_.assign(edges.size(), 0);
   any_start_direction_ = false;
@@ -301,7 +366,8 @@ ProjectionResult LengthConstraintProjection::projectFast(
       // taut span is flung across the line (the span's transverse stiffness treated explicitly,
       // unstable for dt^2 T / (m l) > 1): then finish with Newton steps, whose geometric
       // stiffness makes that part implicit too.
-      result.force_mismatch = forceMismatch(position, edges, contacts);
+      result.force_mismatch =
+          forceMismatch(position, edges, fast_contacts_ != nullptr ? fast_contacts_ : contacts);
       result.converged = result.force_mismatch <= parameters.constraint_tolerance;
       use_newton = use_newton || !result.converged;
     }
@@ -310,6 +376,9 @@ ProjectionResult LengthConstraintProjection::projectFast(
     // may be predicted metres away, too far for Newton steps to start from); then Newton steps
     // settle the edges and the contacts together.
     use_newton = use_newton || contacts != nullptr || newton_first;
+    // Contact rows in the fast iterations: when these do not settle, the caller takes the full
+    // solve with Newton steps and contact rows instead.
+    if (fast_contacts_ != nullptr && (use_newton || result.iterations >= kFastIterations)) break;
     if (!use_newton && result.iterations >= kFastIterations) fast_iterations_stalled = true;
     if (result.iterations == kStartDirectionIterations) {
       // Not converged with start directions (a step that tears or jerks the piece far from
@@ -348,10 +417,11 @@ ProjectionResult LengthConstraintProjection::projectFast(
       // with m >= 0 the total multipliers and each product zero: a linear complementarity
       // problem in m, solved exactly. A taut edge may thus become slack (its pull is taken back)
       // but never pushes.
-      multiplyGram(edges, multiplier_, product_);
+      multiplyGram(edges, multiplier_, product_, &fast_rows_.multiplier());
       for (std::size_t e = 0; e < edges.size(); ++e) {
         target_[e] = residual_[e] + stretch_state_.shift()[e] * multiplier_[e] + product_[e];
       }
+      if (fast_contacts_ != nullptr) fast_rows_.setTargets(row_product_);
       solveComplementarity(edges, gram, system);
       for (std::size_t e = 0; e < edges.size(); ++e) {
         if (!candidate_[e]) continue;
@@ -364,6 +434,10 @@ ProjectionResult LengthConstraintProjection::projectFast(
         position[a] += (inverse_mass_[a] * change) * correctionDirection(e, false);
         position[b] -= (inverse_mass_[b] * change) * correctionDirection(e, true);
       }
+      if (fast_contacts_ != nullptr) {
+        fast_rows_.accept(inverse_mass_, position);
+        fast_rows_.store(*fast_contacts_);
+      }
     }
     ++result.iterations;
     result.max_violation = evaluate(position, edges);
@@ -371,6 +445,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
       contacts->linearize(position);
       result.max_penetration = contacts->maxPenetration();
     }
+    if (fast_contacts_ != nullptr) linearizeFastRows(position, result);
   }
   for (std::size_t e = 0; e < edges.size(); ++e) was_taut_[e] = multiplier_[e] > 0.0 ? 1 : 0;
   last_multiplier_ = multiplier_;

@@ -10,6 +10,8 @@
 #include "yarn_tearing/core/edge_set.hpp"
 #include "yarn_tearing/core/edge_stretch_limits.hpp"
 #include "yarn_tearing/core/edge_stretch_state.hpp"
+#include "yarn_tearing/core/fast_contact_rows.hpp"
+#include "yarn_tearing/core/resting_contacts.hpp"
 #include "yarn_tearing/core/simulation_parameters.hpp"
 #include "yarn_tearing/core/stiff_newton_step.hpp"
 #include "yarn_tearing/core/taut_frontier.hpp"
@@ -83,6 +85,15 @@ class LengthConstraintProjection {
   }
 
  private:
+  /// The fast path for contacts: the vertices that stuck on a face in the last step held where
+  /// they stuck (RestingContacts), the few other contact points as rows of the fast iterations
+  /// (FastContactRows). True when the fast iterations converge and every contact's
+  /// complementarity holds (the impulses are then stored in `contacts`); false, with everything
+  /// restored for the full solve (Newton steps with contact rows), otherwise.
+  bool projectContactsFast(std::vector<Eigen::Vector3d>& position, const VertexSet& vertices,
+                           const EdgeSet& edges, const EdgeStretchLimits& limits,
+                           const SimulationParameters& parameters, EdgeGramSolver& gram,
+                           ContactSet& contacts, ProjectionResult& result);
   /// Sets the multiplier of each intact edge between two pinned or kinematic vertices from its
   /// length (EdgeStretchState::multiplierAtLength).
   void holdEdgesBetweenSupports(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
@@ -112,9 +123,13 @@ class LengthConstraintProjection {
                                const SimulationParameters& parameters, EdgeGramSolver& gram,
                                ContactSet* contacts,
                                const std::vector<Eigen::Vector3d>* step_start);
-  /// product = K multiplier, K = J W J^T over the candidate edges (matrix-free, any graph).
+  /// product = K multiplier, K = J W J^T over the candidate edges (matrix-free, any graph); with
+  /// fast contact rows, `row_multiplier` their multipliers, and row_product_ their products.
   void multiplyGram(const EdgeSet& edges, const std::vector<double>& multiplier,
-                    std::vector<double>& product);
+                    std::vector<double>& product,
+                    const std::vector<double>* row_multiplier = nullptr);
+  /// Linearizes the contacts and the fast contact rows at `position`; sets the penetration.
+  void linearizeFastRows(const std::vector<Eigen::Vector3d>& position, ProjectionResult& result);
   /// Solves the linear complementarity problem of one iteration: step_ = multipliers >= 0.
   void solveComplementarity(const EdgeSet& edges, EdgeGramSolver& gram, const GramSystem& system);
   ProjectionResult projectGaussSeidel(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
@@ -133,14 +148,29 @@ class LengthConstraintProjection {
   double last_move_ = 0.0;            ///< largest move of the last Newton step per edge length [-]
   std::vector<double> step_;          ///< candidate multipliers of a pivoting pass [kg*m]
   std::vector<std::uint8_t> active_;  ///< edges in the active set
-  std::vector<std::uint8_t> candidate_;      ///< intact edges with a movable vertex
-  std::vector<std::uint8_t> was_taut_;       ///< edges taut at the end of the last projection
-  std::vector<double> target_;               ///< right-hand side of the complementarity problem
-  std::vector<double> product_;              ///< K times a multiplier vector [m]
-  std::vector<double> stretch_;              ///< a pass's stretch past the limit per edge [m]
-  TautFrontier frontier_;                    ///< takes in runs of slack edges at once
-  std::vector<Eigen::Vector3d> predicted_;   ///< positions before the projection [m]
-  StiffNewtonStep newton_;                   ///< fallback when the fast iterations stall
+  std::vector<std::uint8_t> candidate_;     ///< intact edges with a movable vertex
+  std::vector<std::uint8_t> was_taut_;      ///< edges taut at the end of the last projection
+  std::vector<double> target_;              ///< right-hand side of the complementarity problem
+  std::vector<double> product_;             ///< K times a multiplier vector [m]
+  std::vector<double> stretch_;             ///< a pass's stretch past the limit per edge [m]
+  TautFrontier frontier_;                   ///< takes in runs of slack edges at once
+  std::vector<Eigen::Vector3d> predicted_;  ///< positions before the projection [m]
+  StiffNewtonStep newton_;                  ///< fallback when the fast iterations stall
+  RestingContacts resting_;                 ///< the resting-contact fast path
+  FastContactRows fast_rows_;               ///< few contact points in the fast iterations
+  /// The contacts of fast_rows_ while projectContactsFast() runs the fast iterations, else null.
+  ContactSet* fast_contacts_ = nullptr;
+  std::vector<double> row_product_;  ///< K times the multipliers, per fast contact row [m]
+  /// What projectContactsFast() restores when its guess fails.
+  struct RestingFallback {
+    std::vector<Eigen::Vector3d> position;  ///< the prediction [m]
+    std::vector<double> last_multiplier;    ///< see last_multiplier_ [kg m]
+    std::vector<std::uint8_t> was_taut;     ///< see was_taut_
+    std::vector<double> last_stiffness;     ///< see last_stiffness_ [-]
+    double last_time_step2 = 1.0;           ///< see last_time_step2_ [s^2]
+    bool newton_first_next = false;         ///< see newton_first_next_
+  };
+  RestingFallback resting_fallback_;
   std::vector<std::uint8_t> newton_taut_;    ///< edges the Newton step takes as equalities
   static constexpr int kFastIterations = 6;  ///< fast iterations before Newton takes over
   std::vector<Eigen::Vector3d> vertex_sum_;  ///< per-vertex sum of multiplier * direction

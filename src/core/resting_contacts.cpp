@@ -1,0 +1,134 @@
+#include "yarn_tearing/core/resting_contacts.hpp"
+
+#include <cmath>
+
+namespace yarn_tearing {
+namespace {
+
+/// Whether `c` is a vertex contact that pushed and stuck along both tangents in the last step
+/// (ContactSet carries those states) and is predicted to push again.
+bool stuckVertexContact(const Contact& c) {
+  if (c.a != c.b || !(c.friction > 0.0) || !c.friction_known || !c.active) return false;
+  for (int k = 0; k < Contact::kFrictionDirections; ++k) {
+    if (c.friction_sign[k] != 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void RestingContacts::select(const ContactSet& contacts, const std::vector<double>& inverse_mass) {
+  const std::vector<Contact>& list = contacts.contacts();
+  const std::size_t n = inverse_mass.size();
+  vertex_contact_.assign(n, -1);
+  held_by_.assign(n, -1);
+  held_.clear();
+  target_.clear();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const Contact& c = list[i];
+    if (c.a != c.b) continue;
+    std::int32_t& slot = vertex_contact_[c.a];
+    slot = slot == -1 ? static_cast<std::int32_t>(i) : -2;
+  }
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const Contact& c = list[i];
+    if (stuckVertexContact(c) && inverse_mass[c.a] > 0.0 &&
+        vertex_contact_[c.a] == static_cast<std::int32_t>(i)) {
+      held_by_[c.a] = static_cast<std::int32_t>(i);
+      held_.push_back(c.a);
+      // Vertex contacts are on flat faces: the point where it stuck, moved along the face's
+      // normal onto the surface (distance r).
+      const Eigen::Vector3d anchor = c.anchor();
+      target_.push_back(anchor +
+                        (c.radius - c.side_normal.dot(anchor - c.side_point)) * c.side_normal);
+    }
+  }
+  was_active_.resize(list.size());
+  handled_.resize(list.size());
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const Contact& c = list[i];
+    was_active_[i] = c.active ? 1 : 0;
+    handled_[i] = held_by_[c.a] >= 0 && held_by_[c.b] >= 0 ? 1 : 0;
+  }
+}
+
+void RestingContacts::restore(ContactSet& contacts) const {
+  std::vector<Contact>& list = contacts.contacts();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    list[i].active = was_active_[i] != 0;
+    list[i].normal_multiplier = 0.0;
+    list[i].friction_impulse.setZero();
+  }
+}
+
+void RestingContacts::hold(std::vector<Eigen::Vector3d>& position,
+                           std::vector<double>& inverse_mass) const {
+  for (std::size_t k = 0; k < held_.size(); ++k) {
+    position[held_[k]] = target_[k];
+    inverse_mass[held_[k]] = 0.0;
+  }
+}
+
+bool RestingContacts::accept(ContactSet& contacts, const std::vector<Eigen::Vector3d>& position,
+                             const std::vector<Eigen::Vector3d>& predicted,
+                             const std::vector<double>& inverse_mass, const EdgeSet& edges,
+                             const std::vector<double>& multiplier, double tolerance) {
+  std::vector<Contact>& list = contacts.contacts();
+  contacts.linearize(position);
+  // Each edge's impulse on its ends along its final direction (a pulls towards b), and the
+  // other contacts' (rows of the fast iterations).
+  other_impulse_.assign(position.size(), Eigen::Vector3d::Zero());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (!edges.intact(e) || multiplier[e] == 0.0) continue;
+    const std::uint32_t a = edges.vertex_a[e];
+    const std::uint32_t b = edges.vertex_b[e];
+    const Eigen::Vector3d d = position[b] - position[a];
+    const double length = d.norm();
+    if (!(length > 0.0)) continue;
+    const Eigen::Vector3d impulse = (multiplier[e] / length) * d;
+    other_impulse_[a] += impulse;
+    other_impulse_[b] -= impulse;
+  }
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const Contact& c = list[i];
+    if (handled_[i] != 0) continue;
+    other_impulse_[c.a] += (1.0 - c.t) * c.impulse();
+    if (c.b != c.a) other_impulse_[c.b] += c.t * c.impulse();
+  }
+  bool holds = true;
+  for (std::size_t i = 0; i < list.size() && holds; ++i) {
+    const Contact& c = list[i];
+    if (held_by_[c.a] != static_cast<std::int32_t>(i) || c.a != c.b) {
+      // No row: it must not penetrate.
+      holds = -c.gap <= tolerance * c.scale;
+      continue;
+    }
+    // m (x - x~) = edge impulses + contact impulse.
+    const Eigen::Vector3d impulse =
+        (position[c.a] - predicted[c.a]) / inverse_mass[c.a] - other_impulse_[c.a];
+    const double normal = c.normal.dot(impulse);
+    holds = normal > 0.0 && std::abs(c.gap) <= tolerance * c.scale;
+    for (int k = 0; k < Contact::kFrictionDirections && holds; ++k) {
+      holds = std::abs(c.tangent[k].dot(impulse)) <= c.friction * normal;
+    }
+  }
+  if (!holds) return false;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    Contact& c = list[i];
+    if (handled_[i] == 0) continue;  // a row: its impulse is the fast iterations'
+    if (held_by_[c.a] != static_cast<std::int32_t>(i) || c.a != c.b) {
+      c.active = false;
+      c.normal_multiplier = 0.0;
+      c.friction_impulse.setZero();
+      continue;
+    }
+    const Eigen::Vector3d impulse =
+        (position[c.a] - predicted[c.a]) / inverse_mass[c.a] - other_impulse_[c.a];
+    c.active = true;
+    c.normal_multiplier = c.normal.dot(impulse);
+    c.friction_impulse = impulse - c.normal_multiplier * c.normal;
+  }
+  return true;
+}
+
+}  // namespace yarn_tearing
