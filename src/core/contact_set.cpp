@@ -28,10 +28,14 @@ void ContactSet::detect(const Input& input) {
   start_ = input.start;
   if (!contacts_.empty()) previous_.swap(contacts_);
   contacts_.clear();
-  std::sort(previous_.begin(), previous_.end(), [](const Contact& l, const Contact& r) {
-    return std::make_tuple(l.obstacle, l.a, l.b) < std::make_tuple(r.obstacle, r.a, r.b);
-  });
+  contacts_.reserve(previous_.size());
+  previous_sorted_ = false;
   const std::vector<Obstacle>& obstacles = *input.obstacles;
+  // Each obstacle's motion over the step, once per obstacle rather than per point.
+  motion_.resize(obstacles.size());
+  for (std::size_t o = 0; o < obstacles.size(); ++o) {
+    motion_[o] = obstacles[o].pose * (*input.previous_pose)[o].inverse(Eigen::Isometry);
+  }
   const std::vector<Eigen::Vector3d>& predicted = *input.predicted;
   const std::vector<double>& w = *input.inverse_mass;
   const EdgeSet& edges = *input.edges;
@@ -89,7 +93,7 @@ void ContactSet::add(const Input& input, std::uint32_t obstacle, std::uint32_t a
   c.scale = scale;
   c.friction = o.friction;
   // The side the point starts on: its start position carried along by the obstacle's motion.
-  const Eigen::Isometry3d motion = o.pose * (*input.previous_pose)[obstacle].inverse();
+  const Eigen::Isometry3d& motion = motion_[obstacle];
   const Eigen::Vector3d start = motion * c.point(*input.start);
   const double start_distance = o.signedDistance(start, c.side_normal);
   c.side_point = start - start_distance * c.side_normal;
@@ -112,12 +116,21 @@ void ContactSet::add(const Input& input, std::uint32_t obstacle, std::uint32_t a
   contacts_.push_back(c);
 }
 
-void ContactSet::carryFrictionStates(Contact& c) const {
-  // previous_ is sorted by (obstacle, a, b).
+void ContactSet::carryFrictionStates(Contact& c) {
   const auto key = [](const Contact& k) { return std::make_tuple(k.obstacle, k.a, k.b); };
-  const auto it =
-      std::lower_bound(previous_.begin(), previous_.end(), c,
-                       [&](const Contact& l, const Contact& r) { return key(l) < key(r); });
+  // Detection finds the points in the same order from step to step while the yarn stays where
+  // it is (a yarn at rest): the point at the same place in the last step's list is tried first,
+  // the sorted list searched only when it is another.
+  auto it = previous_.begin() + static_cast<std::ptrdiff_t>(contacts_.size());
+  if (contacts_.size() >= previous_.size() || key(*it) != key(c)) {
+    if (!previous_sorted_) {
+      std::sort(previous_.begin(), previous_.end(),
+                [&](const Contact& l, const Contact& r) { return key(l) < key(r); });
+      previous_sorted_ = true;
+    }
+    it = std::lower_bound(previous_.begin(), previous_.end(), c,
+                          [&](const Contact& l, const Contact& r) { return key(l) < key(r); });
+  }
   if (it == previous_.end() || key(*it) != key(c) || !it->active) return;
   for (int k = 0; k < Contact::kFrictionDirections; ++k) c.friction_sign[k] = it->friction_sign[k];
   c.friction_known = true;

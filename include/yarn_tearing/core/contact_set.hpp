@@ -129,12 +129,14 @@ class ContactSet {
   const std::vector<Obstacle>* obstacles_ = nullptr;
   /// The friction states of the last step's point
   /// on the same segment (or vertex) and obstacle, if it had one.
-  void carryFrictionStates(Contact& c) const;
+  void carryFrictionStates(Contact& c);
 
   const std::vector<Eigen::Vector3d>* start_ = nullptr;
   std::vector<Contact> contacts_;
-  std::vector<Contact> previous_;  ///< the last step's contacts, while detecting [-]
-  std::vector<double> scale_;      ///< per vertex: its longest edge [m]
+  std::vector<Contact> previous_;          ///< the last step's contacts, while detecting [-]
+  bool previous_sorted_ = false;           ///< previous_ sorted by (obstacle, a, b) in this detect
+  std::vector<Eigen::Isometry3d> motion_;  ///< per obstacle: pose times the step's start pose^-1
+  std::vector<double> scale_;              ///< per vertex: its longest edge [m]
 };
 
 }  // namespace yarn_tearing
