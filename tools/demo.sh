@@ -11,9 +11,11 @@
 #   tools/demo.sh record:=false                     # no bag, no figures
 #   tools/demo.sh --capstan                         # the capstan demo instead (capstan_demo.launch,
 #                                                   # ~1 min): also capstan.png
+#   tools/demo.sh --fabric                          # the trouser tear instead (fabric_demo.launch):
+#                                                   # fabric filmstrip and tear force-extension
 #
 # <out> is $YARN_TEARING_DEMO_OUT, default ./yarn_tearing_demo_<UTC time>. Exits non-zero when the
-# yarns did not both tear (demo_supervisor timed out or was interrupted) or plotting failed.
+# demo did not end by itself (demo_supervisor timed out or was interrupted) or plotting failed.
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -33,6 +35,10 @@ for arg in "$@"; do
       # plot_bag draws the capstan law with the peg's friction coefficient from the demo's config.
       mu="$(/usr/bin/python3 -c 'import sys, yaml; print(yaml.safe_load(open(sys.argv[1]))["obstacles"][0]["friction"])' "${repo}/config/capstan_demo.yaml")"
       plot_args+=(--capstan-friction "${mu}")
+      continue
+      ;;
+    --fabric)
+      launch_file=fabric_demo.launch
       continue
       ;;
     rviz:=true)
@@ -70,7 +76,7 @@ demo_ok=false
 if [[ "$(cat "${status_file}" 2>/dev/null)" == 0 ]]; then
   demo_ok=true
 else
-  echo "demo.sh: the demo did not end with its yarns torn (timeout, interrupted or crashed)" >&2
+  echo "demo.sh: the demo did not end torn (timeout, interrupted or crashed)" >&2
 fi
 rm -f "${status_file}"
 if [[ "${record}" != true ]]; then
