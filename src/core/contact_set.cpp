@@ -58,13 +58,14 @@ void ContactSet::detect(const Input& input) {
     // On a round solid each segment has one contact, at its closest point, ends included (two
     // segments meeting at a vertex may both touch it there: their rows then share the push).
     // On flat faces the closest points are vertices, and a segment point is added only where
-    // the distance has an inner minimum (a box's edge).
+    // the distance has an inner minimum (a box's edge; never on a plane, linear along a segment).
     const bool round =
         obstacle.shape == ObstacleShape::kSphere || obstacle.shape == ObstacleShape::kCapsule;
     for (std::uint32_t v = 0; v < predicted.size() && !round; ++v) {
       if (w[v] == 0.0 || scale_[v] == 0.0 || far(predicted[v], v, 0.0)) continue;
       add(input, o, v, v, 0.0, scale_[v]);
     }
+    if (obstacle.shape == ObstacleShape::kPlane) continue;
     for (std::size_t e = 0; e < edges.size(); ++e) {
       if (!edges.intact(e)) continue;
       const std::uint32_t a = edges.vertex_a[e];
@@ -72,7 +73,12 @@ void ContactSet::detect(const Input& input) {
       if (w[a] + w[b] == 0.0) continue;
       const Eigen::Vector3d& xa = predicted[a];
       const Eigen::Vector3d& xb = predicted[b];
-      if (far((xa + xb) / 2, a, (xa - xb).norm() / 2)) continue;
+      const Eigen::Vector3d middle = (xa + xb) / 2;
+      const double half = (xa - xb).norm() / 2;
+      if (far(middle, a, half) ||
+          clearOfReach(input, o, a, b, middle, half, edges.rest_length[e])) {
+        continue;
+      }
       const double t = obstacle.closestOnSegment(xa, xb);
       if (round || (t > kEndFraction && t < 1.0 - kEndFraction)) {
         add(input, o, a, b, t, edges.rest_length[e]);
@@ -81,39 +87,67 @@ void ContactSet::detect(const Input& input) {
   }
 }
 
+bool ContactSet::clearOfReach(const Input& input, std::uint32_t obstacle, std::uint32_t a,
+                              std::uint32_t b, const Eigen::Vector3d& middle, double half,
+                              double scale) const {
+  // add() keeps a point p of the segment when its gap at the start (carried by the obstacle's
+  // motion) or at the prediction is within reach = scale + |move of p|. Every point of the
+  // segment is within `half` of the middle, and p moves by at most `move`, the larger of its
+  // ends' moves (p is their weighted mean): its predicted gap is at least
+  // distance(middle) - half - r, its start gap at least that less `move` (the distance is
+  // 1-Lipschitz). So a segment whose lower bound exceeds scale + 2 move is one add() would drop
+  // (and its normals at the start and the prediction are on the same side: a convex solid's
+  // normals at two points closer than either's distance make an angle below 90 degrees).
+  const Eigen::Isometry3d& motion = motion_[obstacle];
+  const std::vector<Eigen::Vector3d>& start = *input.start;
+  const std::vector<Eigen::Vector3d>& predicted = *input.predicted;
+  const double move = std::max((predicted[a] - motion * start[a]).norm(),
+                               (predicted[b] - motion * start[b]).norm());
+  const double lower =
+      (*input.obstacles)[obstacle].signedDistance(middle) - half - (*input.vertex_radius)[a];
+  return lower > scale + 2.0 * move;
+}
+
 void ContactSet::add(const Input& input, std::uint32_t obstacle, std::uint32_t a, std::uint32_t b,
                      double t, double scale) {
   const Obstacle& o = (*input.obstacles)[obstacle];
-  Contact c;
+  const double radius = (*input.vertex_radius)[a];
+  const std::vector<Eigen::Vector3d>& start_position = *input.start;
+  const std::vector<Eigen::Vector3d>& predicted_position = *input.predicted;
+  // The side the point starts on: its start position carried along by the obstacle's motion.
+  const Eigen::Isometry3d& motion = motion_[obstacle];
+  const Eigen::Vector3d start = motion * ((1.0 - t) * start_position[a] + t * start_position[b]);
+  Eigen::Vector3d side_normal;
+  const double start_distance = o.signedDistance(start, side_normal);
+  const Eigen::Vector3d side_point = start - start_distance * side_normal;
+  Eigen::Vector3d normal;
+  const Eigen::Vector3d predicted = (1.0 - t) * predicted_position[a] + t * predicted_position[b];
+  const double predicted_gap = sideDistance(o, side_normal, side_point, predicted, normal) - radius;
+  const double reach = scale + (predicted - start).norm();
+  if (std::min(start_distance - radius, predicted_gap) > reach) return;
+  // Built in place: a table's thousand points a step.
+  Contact& c = contacts_.emplace_back();
   c.a = a;
   c.b = b;
   c.t = t;
   c.obstacle = obstacle;
-  c.radius = (*input.vertex_radius)[a];
+  c.radius = radius;
   c.scale = scale;
   c.friction = o.friction;
-  // The side the point starts on: its start position carried along by the obstacle's motion.
-  const Eigen::Isometry3d& motion = motion_[obstacle];
-  const Eigen::Vector3d start = motion * c.point(*input.start);
-  const double start_distance = o.signedDistance(start, c.side_normal);
-  c.side_point = start - start_distance * c.side_normal;
-  Eigen::Vector3d normal;
-  const Eigen::Vector3d predicted = c.point(*input.predicted);
-  const double predicted_gap = distance(c, predicted, normal) - c.radius;
-  const double reach = scale + (predicted - start).norm();
-  if (std::min(start_distance - c.radius, predicted_gap) > reach) return;
+  c.side_normal = side_normal;
+  c.side_point = side_point;
   // A point touching at the start sticks where it was; one arriving, where it arrives.
-  const bool touching = start_distance - c.radius <= 1e-6 * scale;
-  c.anchor_a = motion * (*input.start)[a];
-  c.anchor_b = motion * (*input.start)[b];
-  if (!touching) {
+  const bool touching = start_distance - radius <= 1e-6 * scale;
+  if (touching) {
+    c.anchor_a = motion * start_position[a];
+    c.anchor_b = a == b ? c.anchor_a : motion * start_position[b];
+  } else {
     const Eigen::Vector3d arrival = -std::min(predicted_gap, 0.0) * normal;
-    c.anchor_a = (*input.predicted)[a] + arrival;
-    c.anchor_b = (*input.predicted)[b] + arrival;
+    c.anchor_a = predicted_position[a] + arrival;
+    c.anchor_b = predicted_position[b] + arrival;
   }
   c.active = predicted_gap < 0.0;
   if (touching) carryFrictionStates(c);
-  contacts_.push_back(c);
 }
 
 void ContactSet::carryFrictionStates(Contact& c) {
@@ -121,8 +155,9 @@ void ContactSet::carryFrictionStates(Contact& c) {
   // Detection finds the points in the same order from step to step while the yarn stays where
   // it is (a yarn at rest): the point at the same place in the last step's list is tried first,
   // the sorted list searched only when it is another.
-  auto it = previous_.begin() + static_cast<std::ptrdiff_t>(contacts_.size());
-  if (contacts_.size() >= previous_.size() || key(*it) != key(c)) {
+  const std::size_t index = contacts_.size() - 1;  // c is the last one added
+  auto it = previous_.begin() + static_cast<std::ptrdiff_t>(index);
+  if (index >= previous_.size() || key(*it) != key(c)) {
     if (!previous_sorted_) {
       std::sort(previous_.begin(), previous_.end(),
                 [&](const Contact& l, const Contact& r) { return key(l) < key(r); });
@@ -136,16 +171,20 @@ void ContactSet::carryFrictionStates(Contact& c) {
   c.friction_known = true;
 }
 
-double ContactSet::distance(const Contact& c, const Eigen::Vector3d& p,
-                            Eigen::Vector3d& normal) const {
-  const double d = (*obstacles_)[c.obstacle].signedDistance(p, normal);
-  if (normal.dot(c.side_normal) >= 0.0) return d;
+double ContactSet::sideDistance(const Obstacle& obstacle, const Eigen::Vector3d& side_normal,
+                                const Eigen::Vector3d& side_point, const Eigen::Vector3d& p,
+                                Eigen::Vector3d& normal) {
+  const double d = obstacle.signedDistance(p, normal);
+  if (normal.dot(side_normal) >= 0.0) return d;
   // Through to the other side (a thin peg, a fast yarn): hold it on the side it came from.
-  normal = c.side_normal;
-  return c.side_normal.dot(p - c.side_point);
+  normal = side_normal;
+  return side_normal.dot(p - side_point);
 }
 
 void ContactSet::linearize(const std::vector<Eigen::Vector3d>& x) {
+  // A face's points share their normal: its orthogonal tangent is found once.
+  Eigen::Vector3d last_normal = Eigen::Vector3d::Zero();
+  Eigen::Vector3d last_orthogonal = Eigen::Vector3d::Zero();
   for (Contact& c : contacts_) {
     // A segment point follows the segment's closest point at every iterate, so that its row is
     // the gradient of the segment's own distance (the Newton steps add the curvature that
@@ -162,7 +201,9 @@ void ContactSet::linearize(const std::vector<Eigen::Vector3d>& x) {
         c.t = t;
       }
     }
-    c.gap = distance(c, c.point(x), c.normal) - c.radius;
+    c.gap =
+        sideDistance((*obstacles_)[c.obstacle], c.side_normal, c.side_point, c.point(x), c.normal) -
+        c.radius;
     c.enabled = !at_end;
     if (at_end) {
       // The segment's closest point has moved to an end, whose vertex contact holds it: two
@@ -174,9 +215,15 @@ void ContactSet::linearize(const std::vector<Eigen::Vector3d>& x) {
     }
     const Eigen::Vector3d axis = x[c.b] - x[c.a];
     const Eigen::Vector3d along = axis - c.normal.dot(axis) * c.normal;
-    c.tangent[0] = c.a != c.b && along.norm() > 1e-9 * axis.norm()
-                       ? Eigen::Vector3d(along.normalized())
-                       : orthogonal(c.normal);
+    if (c.a != c.b && along.norm() > 1e-9 * axis.norm()) {
+      c.tangent[0] = along.normalized();
+    } else {
+      if (c.normal != last_normal) {
+        last_normal = c.normal;
+        last_orthogonal = orthogonal(c.normal);
+      }
+      c.tangent[0] = last_orthogonal;
+    }
     c.tangent[1] = c.normal.cross(c.tangent[0]);
   }
 }

@@ -24,37 +24,60 @@ void EdgeGramSolver::setTopology(const EdgeSet& edges, std::size_t num_vertices)
   included_.resize(edges.size());
   upper_.resize(edges.size());
   sweep_.resize(edges.size());
+  pivot_.resize(edges.size());
+  gram_diagonal_.resize(edges.size());
 }
 
 void EdgeGramSolver::solve(const EdgeSet& edges, const GramSystem& system,
                            std::vector<double>& rhs) {
-  assembleDiagonal(edges, system, rhs);
+  assembleDiagonal(edges, system);
+  prepareRightHandSide(system, rhs);
   if (usesBandedPath()) {
-    solveBanded(edges, system, rhs);
+    factorizeBanded(edges, system);
+    substituteBanded(rhs);
   } else {
     solveGeneral(edges, system, rhs);
   }
 }
 
-void EdgeGramSolver::assembleDiagonal(const EdgeSet& edges, const GramSystem& system,
-                                      std::vector<double>& rhs) {
+void EdgeGramSolver::resolve(const GramSystem& system, std::vector<double>& rhs) {
+  prepareRightHandSide(system, rhs);
+  if (usesBandedPath()) {
+    substituteBanded(rhs);
+    return;
+  }
+  Eigen::Map<Eigen::VectorXd> b(rhs.data(), static_cast<Eigen::Index>(included_.size()));
+  const Eigen::VectorXd x = factorization_.solve(b);
+  b = x;
+}
+
+void EdgeGramSolver::assembleDiagonal(const EdgeSet& edges, const GramSystem& system) {
   const std::vector<double>& w = *system.vertex_weight;
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const double g = (*system.active)[e] ? w[edges.vertex_a[e]] + w[edges.vertex_b[e]] : 0.0;
+    gram_diagonal_[e] = g;
     included_[e] = g > 0.0 ? 1 : 0;
     if (!included_[e]) {
       diagonal_[e] = 1.0;
-      rhs[e] = 0.0;
       continue;
     }
     diagonal_[e] = g * (1.0 + system.regularization);
     if (system.diagonal_shift != nullptr) diagonal_[e] += (*system.diagonal_shift)[e];
-    if (system.anchor != nullptr) rhs[e] += system.regularization * g * (*system.anchor)[e];
   }
 }
 
-void EdgeGramSolver::solveBanded(const EdgeSet& edges, const GramSystem& system,
-                                 std::vector<double>& rhs) {
+void EdgeGramSolver::prepareRightHandSide(const GramSystem& system,
+                                          std::vector<double>& rhs) const {
+  for (std::size_t e = 0; e < included_.size(); ++e) {
+    if (!included_[e]) {
+      rhs[e] = 0.0;
+    } else if (system.anchor != nullptr) {
+      rhs[e] += system.regularization * gram_diagonal_[e] * (*system.anchor)[e];
+    }
+  }
+}
+
+void EdgeGramSolver::factorizeBanded(const EdgeSet& edges, const GramSystem& system) {
   const std::vector<double>& w = *system.vertex_weight;
   const std::vector<Eigen::Vector3d>& n = *system.direction;
   const std::size_t q = edges.size();
@@ -65,13 +88,20 @@ void EdgeGramSolver::solveBanded(const EdgeSet& edges, const GramSystem& system,
   }
   // Thomas algorithm (the matrix is symmetric positive definite, no pivoting needed).
   double previous_sweep = 0.0;
+  for (std::size_t e = 0; e < q; ++e) {
+    const double lower = e > 0 ? upper_[e - 1] : 0.0;
+    pivot_[e] = diagonal_[e] - lower * previous_sweep;
+    sweep_[e] = upper_[e] / pivot_[e];
+    previous_sweep = sweep_[e];
+  }
+}
+
+void EdgeGramSolver::substituteBanded(std::vector<double>& rhs) const {
+  const std::size_t q = pivot_.size();
   double previous_rhs = 0.0;
   for (std::size_t e = 0; e < q; ++e) {
     const double lower = e > 0 ? upper_[e - 1] : 0.0;
-    const double pivot = diagonal_[e] - lower * previous_sweep;
-    sweep_[e] = upper_[e] / pivot;
-    rhs[e] = (rhs[e] - lower * previous_rhs) / pivot;
-    previous_sweep = sweep_[e];
+    rhs[e] = (rhs[e] - lower * previous_rhs) / pivot_[e];
     previous_rhs = rhs[e];
   }
   for (std::size_t e = q; e-- > 1;) rhs[e - 1] -= sweep_[e - 1] * rhs[e];

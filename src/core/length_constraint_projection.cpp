@@ -62,9 +62,10 @@ bool LengthConstraintProjection::projectContactsFast(
   fast_contacts_ = nullptr;
   holdEdgesBetweenSupports(position, edges);
   for (std::size_t v = 0; v < vertices.size(); ++v) inverse_mass_[v] = vertices.inverseMass(v);
+  // With rows, the fast iterations have linearized every contact at the final positions.
   if (result.converged && fast_rows_.frictionHolds(contacts) &&
       resting_.accept(contacts, position, resting_fallback_.position, inverse_mass_, edges,
-                      multiplier_, parameters.constraint_tolerance)) {
+                      multiplier_, parameters.constraint_tolerance, !fast_rows_.empty())) {
     result.max_penetration = contacts.maxPenetration();
     return true;
   }

@@ -72,9 +72,10 @@ void RestingContacts::hold(std::vector<Eigen::Vector3d>& position,
 bool RestingContacts::accept(ContactSet& contacts, const std::vector<Eigen::Vector3d>& position,
                              const std::vector<Eigen::Vector3d>& predicted,
                              const std::vector<double>& inverse_mass, const EdgeSet& edges,
-                             const std::vector<double>& multiplier, double tolerance) {
+                             const std::vector<double>& multiplier, double tolerance,
+                             bool linearized) {
   std::vector<Contact>& list = contacts.contacts();
-  contacts.linearize(position);
+  if (!linearized) contacts.linearize(position);
   // Each edge's impulse on its ends along its final direction (a pulls towards b), and the
   // other contacts' (rows of the fast iterations).
   other_impulse_.assign(position.size(), Eigen::Vector3d::Zero());

@@ -123,8 +123,16 @@ class ContactSet {
  private:
   void add(const Input& input, std::uint32_t obstacle, std::uint32_t a, std::uint32_t b, double t,
            double scale);
-  /// Distance - r and normal of contact `c` at point `p`, on the side the step started.
-  double distance(const Contact& c, const Eigen::Vector3d& p, Eigen::Vector3d& normal) const;
+  /// Distance [m] from `obstacle` and the normal at point `p`, on the side the step started
+  /// (the point's outward normal `side_normal` and surface point `side_point` [m] there).
+  static double sideDistance(const Obstacle& obstacle, const Eigen::Vector3d& side_normal,
+                             const Eigen::Vector3d& side_point, const Eigen::Vector3d& p,
+                             Eigen::Vector3d& normal);
+  /// True when no point of segment (a, b), whose predicted middle is `middle` [m] and half
+  /// length `half` [m], can come within add()'s reach of `obstacle` (`scale` [m] as add()'s):
+  /// a bound from the obstacle's distance at the middle, before the closest point is sought.
+  bool clearOfReach(const Input& input, std::uint32_t obstacle, std::uint32_t a, std::uint32_t b,
+                    const Eigen::Vector3d& middle, double half, double scale) const;
 
   const std::vector<Obstacle>* obstacles_ = nullptr;
   /// The friction states of the last step's point

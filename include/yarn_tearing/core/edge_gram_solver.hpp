@@ -41,11 +41,20 @@ class EdgeGramSolver {
 
   /// Solves in place: `rhs` in, x out.
   void solve(const EdgeSet& edges, const GramSystem& system, std::vector<double>& rhs);
+  /// Solves in place for another right-hand side of the system the last solve() factorized
+  /// (`system` unchanged since): solve()'s result without factorizing again (a few columns of
+  /// the fast contact rows' Schur complement per pass).
+  void resolve(const GramSystem& system, std::vector<double>& rhs);
 
  private:
-  /// Fills diagonal_ (G_ee + lambda G_ee + c_e, or 1 for left-out edges) and adds the anchor term.
-  void assembleDiagonal(const EdgeSet& edges, const GramSystem& system, std::vector<double>& rhs);
-  void solveBanded(const EdgeSet& edges, const GramSystem& system, std::vector<double>& rhs);
+  /// Fills diagonal_ (G_ee + lambda G_ee + c_e, or 1 for left-out edges) and gram_diagonal_.
+  void assembleDiagonal(const EdgeSet& edges, const GramSystem& system);
+  /// Adds the anchor term to `rhs`, and sets it to 0 for left-out edges.
+  void prepareRightHandSide(const GramSystem& system, std::vector<double>& rhs) const;
+  /// Thomas elimination of the banded matrix: pivot_, sweep_.
+  void factorizeBanded(const EdgeSet& edges, const GramSystem& system);
+  /// Solves in place with the last factorizeBanded().
+  void substituteBanded(std::vector<double>& rhs) const;
   void solveGeneral(const EdgeSet& edges, const GramSystem& system, std::vector<double>& rhs);
 
   bool is_chain_ = false;
@@ -55,6 +64,8 @@ class EdgeGramSolver {
   std::vector<std::uint8_t> included_;  ///< active edges with a movable vertex
   std::vector<double> upper_;           ///< banded: G_e,e+1
   std::vector<double> sweep_;           ///< banded: Thomas elimination factors
+  std::vector<double> pivot_;           ///< banded: Thomas elimination pivots
+  std::vector<double> gram_diagonal_;   ///< G_ee of the included edges (anchor term) [1/kg]
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> matrix_;
   /// The general path's factorization, its symbolic analysis kept while the pattern holds.

@@ -31,6 +31,8 @@ struct Obstacle {
   /// Signed distance [m] from world point `p` to the surface (negative inside) and the outward
   /// unit normal there (the gradient of the distance).
   double signedDistance(const Eigen::Vector3d& p, Eigen::Vector3d& normal) const;
+  /// Signed distance [m] from world point `p` to the surface, without the normal.
+  double signedDistance(const Eigen::Vector3d& p) const;
   /// The Hessian of the signed distance at world point `p` outside the solid [1/m]: the
   /// surface's curvature there (0 on a plane or a box face).
   Eigen::Matrix3d curvature(const Eigen::Vector3d& p) const;

@@ -41,12 +41,13 @@ class RestingContacts {
   /// the other handled ones none). `position` is final,
   /// `predicted` the positions before the projection [m], `inverse_mass` the vertices' own
   /// (held ones not zeroed) [1/kg], `multiplier` each intact edge's multiplier [kg m],
-  /// `tolerance` the relative penetration allowed [-]. After false, restore() before the
-  /// full solve.
+  /// `tolerance` the relative penetration allowed [-], `linearized` true when `contacts` are
+  /// linearized at `position` already (else it is done here). After false, restore() before
+  /// the full solve.
   bool accept(ContactSet& contacts, const std::vector<Eigen::Vector3d>& position,
               const std::vector<Eigen::Vector3d>& predicted,
               const std::vector<double>& inverse_mass, const EdgeSet& edges,
-              const std::vector<double>& multiplier, double tolerance);
+              const std::vector<double>& multiplier, double tolerance, bool linearized);
 
  private:
   /// Per vertex: the index of the contact holding it, -1 if none.
