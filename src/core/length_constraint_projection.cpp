@@ -352,7 +352,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
   for (std::size_t e = 0; e < edges.size(); ++e) active_[e] |= candidate_[e] & was_taut_[e];
   bool use_newton = false;
   bool fast_iterations_stalled = false;
-  newton_.beginProjection();
+  newton_.beginProjection(parameters.time_step);
   for (;;) {
     // With contacts the iterations start at the step's start, which is not the answer.
     result.converged = result.max_violation <= parameters.constraint_tolerance &&

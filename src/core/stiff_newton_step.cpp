@@ -1,6 +1,9 @@
 #include "yarn_tearing/core/stiff_newton_step.hpp"
 
 #include <algorithm>
+#include <cmath>
+
+#include "yarn_tearing/core/sliding_friction_stiffness.hpp"
 
 namespace yarn_tearing {
 namespace {
@@ -53,7 +56,8 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
       const bool movable_point = c.mobility(inverse_mass) > 0.0;
       normal_row_[i] = c.active && movable_point ? rows++ : -1;
       for (int k = 0; k < Contact::kFrictionDirections; ++k) {
-        const bool sticks = normal_row_[i] >= 0 && hasFriction(i, c) && c.friction_sign[k] == 0;
+        const bool sticks =
+            normal_row_[i] >= 0 && hasFriction(c) && c.friction_sign[k] == 0 && slide_only_[i] == 0;
         friction_row_[i][k] = sticks ? rows++ : -1;
       }
     }
@@ -244,7 +248,7 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
     sortContacts(*contacts, position.size());
     friction_flips_.assign(contacts->contacts().size(), 0);
     normal_flips_.assign(contacts->contacts().size(), 0);
-    frictionless_.assign(contacts->contacts().size(), 0);
+    slide_only_.assign(contacts->contacts().size(), 0);
   }
   banded_ = true;
   for (std::size_t e = 0; e < edges.size() && banded_; ++e) {
@@ -313,8 +317,7 @@ void StiffNewtonStep::addContactRows(const ContactSet& contacts,
     const int rb = c.b != c.a ? vertex_row_[c.b] : -1;
     const double wa = 1.0 - c.t;
     const double wb = c.t;
-    const double shift =
-        kContactCompliance * (wa * wa * inverse_mass[c.a] + wb * wb * inverse_mass[c.b]);
+    const double shift = compliance_ * (wa * wa * inverse_mass[c.a] + wb * wb * inverse_mass[c.b]);
     // Row r of gradient -(wa d, wb d) on (a, b), C = -d . (p - q), right-hand side -C.
     const auto row = [&](int r, const Eigen::Vector3d& d, double rhs) {
       for (int k = 0; k < 3; ++k) {
@@ -360,7 +363,7 @@ void StiffNewtonStep::addContactRows(const ContactSet& contacts,
         }
       }
     }
-    if (normal_row_[i] < 0 || !hasFriction(i, c)) continue;
+    if (normal_row_[i] < 0 || !hasFriction(c)) continue;
     // Sticking tangents hold the point where it stuck; a sliding one pushes with +-mu m_n,
     // m_n the normal row's own multiplier: a column coupling the two (the system becomes
     // unsymmetric, solved by LU), so that the bound is exact in every solve.
@@ -380,6 +383,20 @@ void StiffNewtonStep::addContactRows(const ContactSet& contacts,
       if (ra >= 0) triplets_.emplace_back(ra + k, rn, -wa * sliding[k]);
       if (rb >= 0) triplets_.emplace_back(rb + k, rn, -wb * sliding[k]);
     }
+    // The sliding impulse turns with the segment and the surface: its derivative (as the edges'
+    // geometric stiffness), without which a fast slide's Newton steps converge only linearly.
+    double slide[Contact::kFrictionDirections];
+    for (int k = 0; k < Contact::kFrictionDirections; ++k) {
+      slide[k] = friction_row_[i][k] < 0 ? c.friction_sign[k] * c.friction : 0.0;
+    }
+    SlidingFrictionStiffness blocks;
+    if (!slidingFrictionStiffness(contacts, c, slide, position, blocks)) continue;
+    if (ra >= 0) addBlock(triplets_, ra, ra, blocks.aa);
+    if (rb >= 0) addBlock(triplets_, rb, rb, blocks.bb);
+    if (ra >= 0 && rb >= 0) {
+      addBlock(triplets_, ra, rb, blocks.ab);
+      addBlock(triplets_, rb, ra, blocks.ba);
+    }
   }
 }
 
@@ -397,13 +414,32 @@ void StiffNewtonStep::sortContacts(const ContactSet& contacts, std::size_t num_v
   }
 }
 
-bool StiffNewtonStep::hasFriction(std::size_t i, const Contact& c) const {
-  return c.friction > 0.0 && c.friction_known && frictionless_[i] == 0;
+bool StiffNewtonStep::hasFriction(const Contact& c) { return c.friction > 0.0 && c.friction_known; }
+
+void StiffNewtonStep::slideAlongSlip(std::size_t i, Contact& c,
+                                     const std::vector<Eigen::Vector3d>& position,
+                                     const Eigen::Vector3d& move) {
+  // Pushing without friction instead (as before) let a wrap sliding by 0.4 chord per step at
+  // dt 1e-4 keep its energy: the points that take over the push as the chords pass the post
+  // are those that flip, and they went frictionless (kinetic energy up to 2.2x the capstan
+  // law's bound). Along a tangent that carries less than kSlideShare of the slip, none.
+  slide_only_[i] = 1;
+  const Eigen::Vector3d slip = c.point(position) + move - c.anchor();
+  double largest = 0.0;
+  for (int k = 0; k < Contact::kFrictionDirections; ++k) {
+    largest = std::max(largest, std::abs(c.tangent[k].dot(slip)));
+  }
+  for (int k = 0; k < Contact::kFrictionDirections; ++k) {
+    const double along = c.tangent[k].dot(slip);
+    const bool slips =
+        std::abs(along) > kSlackTolerance * c.scale && std::abs(along) >= kSlideShare * largest;
+    c.friction_sign[k] = slips ? (along > 0.0 ? -1 : 1) : 0;
+  }
 }
 
 Eigen::Vector3d StiffNewtonStep::frictionImpulse(std::size_t i, const Contact& c) const {
   Eigen::Vector3d impulse = Eigen::Vector3d::Zero();
-  if (normal_row_[i] < 0 || !hasFriction(i, c)) return impulse;
+  if (normal_row_[i] < 0 || !hasFriction(c)) return impulse;
   const double bound = c.friction * solution_[normal_row_[i]];
   for (int k = 0; k < Contact::kFrictionDirections; ++k) {
     const int r = friction_row_[i][k];
@@ -433,10 +469,10 @@ bool StiffNewtonStep::pivotContacts(ContactSet& contacts, const std::vector<doub
       // it has a normal force).
       if (c.gap + c.normal.dot(move) < -kSlackTolerance * c.scale) {
         c.active = true;
-        // A point with friction that left and came back too often in this Newton step pushes
-        // without friction for the rest of it: its friction rows made the pass cycle (a point
+        // A point with friction that left and came back too often in this Newton step slides
+        // along its slip for the rest of it: its friction rows made the pass cycle (a point
         // that carries almost nothing between two that carry the wrap).
-        if (++normal_flips_[i] >= kMaxNormalFlips) frictionless_[i] = 1;
+        if (++normal_flips_[i] >= kMaxNormalFlips) slideAlongSlip(i, c, position, move);
         changed = true;
       }
       continue;
@@ -454,12 +490,12 @@ bool StiffNewtonStep::pivotContacts(ContactSet& contacts, const std::vector<doub
       changed = true;
       continue;
     }
-    if (!hasFriction(i, c)) continue;
+    if (!hasFriction(c)) continue;
     const double bound = c.friction * std::max(normal, 0.0);
     // A point whose states flipped too often in this Newton step only starts to slide
     // (kMaxFrictionFlips): its friction never exceeds the bound.
-    const bool may_stick =
-        friction_flips_[i] < kMaxFrictionFlips && newton_steps_ <= kStickingNewtonSteps;
+    const bool may_stick = friction_flips_[i] < kMaxFrictionFlips &&
+                           newton_steps_ <= kStickingNewtonSteps && slide_only_[i] == 0;
     // The point's slip over the step after this solve, from where it stuck [m].
     const Eigen::Vector3d slip = c.point(position) + move - c.anchor();
     for (int k = 0; k < Contact::kFrictionDirections; ++k) {

@@ -65,8 +65,13 @@ class StiffNewtonStep {
   /// its friction bound may flip between sticking and sliding with the same impulse: the flags
   /// alone would never settle).
   double impulseChange() const { return impulse_change_; }
-  /// Starts a projection's Newton steps: counts them from here (kStickingNewtonSteps).
-  void beginProjection() { newton_steps_ = 0; }
+  /// Starts a projection's Newton steps of a step of `time_step` [s]: counts them from here
+  /// (kStickingNewtonSteps) and sets the contact rows' compliance (kContactCompliance).
+  void beginProjection(double time_step) {
+    newton_steps_ = 0;
+    const double longer = time_step / kCompliantStep;
+    compliance_ = longer > 1.0 ? kContactCompliance / (longer * longer) : kContactCompliance;
+  }
 
  private:
   /// Whether edge e's force acts on its end b (or a) along its start direction.
@@ -97,8 +102,12 @@ class StiffNewtonStep {
   /// true when any changed or a sliding bound moved.
   bool pivotContacts(ContactSet& contacts, const std::vector<double>& inverse_mass,
                      const std::vector<Eigen::Vector3d>& position);
-  /// Whether contact `i` (`c`) has friction rows or sliding friction in this apply.
-  bool hasFriction(std::size_t i, const Contact& c) const;
+  /// Makes contact `i` (`c`) slide against its slip over the step (after this pass's `move` of
+  /// its point [m]) for the rest of this apply, without friction rows (kMaxNormalFlips).
+  void slideAlongSlip(std::size_t i, Contact& c, const std::vector<Eigen::Vector3d>& position,
+                      const Eigen::Vector3d& move);
+  /// Whether contact `c` has friction rows or sliding friction in this apply.
+  static bool hasFriction(const Contact& c);
   /// The friction impulse [kg m] on the yarn of contact `i` (`c`) in the last solution.
   Eigen::Vector3d frictionImpulse(std::size_t i, const Contact& c) const;
   /// Keeps each contact's impulse before the solve (impulseChange()).
@@ -172,11 +181,22 @@ class StiffNewtonStep {
   std::vector<int> friction_flips_;
   /// Per contact: how often its normal row was released or taken in in this apply.
   std::vector<int> normal_flips_;
-  /// Per contact: pushes without friction for the rest of this apply (kMaxNormalFlips).
-  std::vector<std::uint8_t> frictionless_;
+  /// Per contact: slides against its slip, without friction rows, for the rest of this apply
+  /// (kMaxNormalFlips).
+  std::vector<std::uint8_t> slide_only_;
+  /// Least share of the largest tangential slip along which a point that slides against its
+  /// slip (slideAlongSlip) takes friction [-]: a tangent that hardly slips gets none rather
+  /// than a sideways push of mu m_n.
+  static constexpr double kSlideShare = 0.5;
   /// Compliance of contact rows relative to the row's own w sum [-]: keeps the system
   /// quasi-definite where contact rows are (nearly) dependent, e.g. two obstacles on a vertex.
   static constexpr double kContactCompliance = 1e-12;
+  /// Longest step with the full kContactCompliance [s]. A row's compliance pushes its point in
+  /// by the compliance times m_n, which grows as dt^2 (m_n = force dt^2): in longer steps the
+  /// compliance falls as 1 / dt^2, so that the penetration stays that of this step (at dt 1e-2
+  /// a 2 pi wrap at 0.9 of the capstan law sat 1.0e-6 of a chord deep, past the tolerance).
+  static constexpr double kCompliantStep = 1e-3;
+  double compliance_ = kContactCompliance;  ///< this projection's, relative to w [-]
   /// Relative margin on the friction bound, so a point right at it does not flip on round-off.
   static constexpr double kFrictionMargin = 1e-9;
   /// Switches of a contact's tangents between sticking and sliding within one Newton step;
@@ -184,7 +204,7 @@ class StiffNewtonStep {
   /// step (against cycling; the friction never exceeds its bound).
   static constexpr int kMaxFrictionFlips = 4;
   /// Releases and take-ins of a contact's normal row within one Newton step after which it
-  /// pushes without friction until the next Newton step (against cycling).
+  /// slides against its slip until the next Newton step (against cycling).
   static constexpr int kMaxNormalFlips = 4;
   /// Relative change of a sliding impulse that needs another Newton step [-] (its bound and
   /// direction follow the iterate, converging with it).
