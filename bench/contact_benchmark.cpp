@@ -4,10 +4,11 @@
 //     same yarn without the peg (hanging from its pin). Target: with the peg <= 2x without.
 //   BM_LyingOnPlane/1000/1 vs BM_LyingOnPlane/1000/0: 1,000 vertices lying straight on a table
 //     (a plane, friction mu = 0.3), settled; /0 is the same yarn without the table (falling
-//     freely from the same start); /2 the table without friction. Target: on the table <= 2x
-//     free.
-// Run (README, Performance):
-//   build/core/yarn_tearing_bench --benchmark_filter='Peg|Plane' --benchmark_repetitions=5
+//     freely from the same start); /2 the table without friction. Target: on the table (either)
+//     <= 2x free.
+// Run (README, Performance; interleaved so that a ratio's two cases see the same load):
+//   build/core/yarn_tearing_bench --benchmark_filter='Peg|Plane' --benchmark_repetitions=9
+//     --benchmark_min_time=0.2 --benchmark_enable_random_interleaving=true
 //     --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 

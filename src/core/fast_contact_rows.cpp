@@ -38,6 +38,11 @@ bool FastContactRows::select(const ContactSet& contacts, const std::vector<std::
   return true;
 }
 
+bool FastContactRows::touches(const std::vector<std::uint8_t>& vertex_mask) const {
+  return std::any_of(row_.begin(), row_.end(),
+                     [&](const Row& r) { return vertex_mask[r.a] != 0 || vertex_mask[r.b] != 0; });
+}
+
 void FastContactRows::reset() {
   multiplier_.assign(row_.size(), 0.0);
   pass_multiplier_.assign(row_.size(), 0.0);

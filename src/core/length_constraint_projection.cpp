@@ -45,8 +45,16 @@ bool LengthConstraintProjection::projectContactsFast(
     const EdgeStretchLimits& limits, const SimulationParameters& parameters, EdgeGramSolver& gram,
     ContactSet& contacts, ProjectionResult& result) {
   if (parameters.projection_method != ProjectionMethod::kFastProjection) return false;
-  resting_.select(contacts, inverse_mass_);
-  if (!fast_rows_.select(contacts, resting_.handled(), inverse_mass_)) return false;
+  // Vertices on frictionless faces move within them, a mobility the rows do not know: where a
+  // row would move one, it is taken without them (their contacts as rows).
+  resting_.select(contacts, inverse_mass_, true);
+  bool selected = fast_rows_.select(contacts, resting_.handled(), inverse_mass_) &&
+                  !fast_rows_.touches(resting_.onFaceMask());
+  if (!selected && resting_.anyOnFace()) {
+    resting_.select(contacts, inverse_mass_, false);
+    selected = fast_rows_.select(contacts, resting_.handled(), inverse_mass_);
+  }
+  if (!selected) return false;
   // What a failed guess must give back to the full solve: the prediction and the warm starts.
   resting_fallback_.position = position;
   resting_fallback_.last_multiplier = last_multiplier_;
@@ -58,8 +66,10 @@ bool LengthConstraintProjection::projectContactsFast(
   // full solve with contacts.
   resting_.hold(position, inverse_mass_);
   fast_contacts_ = fast_rows_.empty() ? nullptr : &contacts;
+  on_faces_ = resting_.anyOnFace();
   result = projectFast(position, edges, parameters, gram, nullptr, nullptr);
   fast_contacts_ = nullptr;
+  on_faces_ = false;
   holdEdgesBetweenSupports(position, edges);
   for (std::size_t v = 0; v < vertices.size(); ++v) inverse_mass_[v] = vertices.inverseMass(v);
   // With rows, the fast iterations have linearized every contact at the final positions.
@@ -202,8 +212,9 @@ double LengthConstraintProjection::forceMismatch(const std::vector<Eigen::Vector
     vertex_scale_[a] = std::max(vertex_scale_[a], limit_[e]);
     vertex_scale_[b] = std::max(vertex_scale_[b], limit_[e]);
   }
-  // The obstacles' impulses move the vertices too.
+  // The obstacles' impulses move the vertices too (on a frictionless face, along its normal).
   if (contacts != nullptr) contacts->addImpulses(inverse_mass_, -1.0, vertex_sum_);
+  if (on_faces_) resting_.dropFaceNormals(vertex_sum_);
   double mismatch = 0.0;
   for (std::size_t v = 0; v < position.size(); ++v) {
     if (sideways_stiffness_[v] > 1.0 && vertex_scale_[v] > 0.0) {
@@ -333,7 +344,8 @@ ProjectionResult LengthConstraintProjection::projectFast(
     }
     if (last_multiplier_.size() == multiplier_.size()) multiplier_ = last_multiplier_;
   }
-  const bool newton_first = contacts == nullptr && newtonFirst(edges.size());
+  // The Newton steps do not keep vertices on faces (on_faces_): not for those.
+  const bool newton_first = contacts == nullptr && !on_faces_ && newtonFirst(edges.size());
   ProjectionResult result;
   result.max_violation = evaluate(position, edges);
   if (contacts != nullptr) {
@@ -379,7 +391,10 @@ ProjectionResult LengthConstraintProjection::projectFast(
     use_newton = use_newton || contacts != nullptr || newton_first;
     // Contact rows in the fast iterations: when these do not settle, the caller takes the full
     // solve with Newton steps and contact rows instead.
-    if (fast_contacts_ != nullptr && (use_newton || result.iterations >= kFastIterations)) break;
+    if ((fast_contacts_ != nullptr || on_faces_) &&
+        (use_newton || result.iterations >= kFastIterations)) {
+      break;
+    }
     if (!use_newton && result.iterations >= kFastIterations) fast_iterations_stalled = true;
     if (result.iterations == kStartDirectionIterations) {
       // Not converged with start directions (a step that tears or jerks the piece far from
@@ -439,6 +454,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
         fast_rows_.accept(inverse_mass_, position);
         fast_rows_.store(*fast_contacts_);
       }
+      if (on_faces_) resting_.keepOnFaces(position);
     }
     ++result.iterations;
     result.max_violation = evaluate(position, edges);

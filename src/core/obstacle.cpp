@@ -115,12 +115,7 @@ void Obstacle::validate() const {
   }
 }
 
-double Obstacle::signedDistance(const Eigen::Vector3d& p, Eigen::Vector3d& normal) const {
-  if (shape == ObstacleShape::kPlane) {
-    // The frame's z axis, without the whole change of frame (a table: a thousand points a step).
-    normal = pose.linear().col(2);
-    return normal.dot(p - pose.translation());
-  }
+double Obstacle::solidDistance(const Eigen::Vector3d& p, Eigen::Vector3d& normal) const {
   Eigen::Vector3d local_normal;
   const double distance = localDistance(*this, toLocal(pose, p), &local_normal);
   normal = pose.linear() * local_normal;

@@ -15,15 +15,24 @@ bool stuckVertexContact(const Contact& c) {
   return true;
 }
 
+/// Whether `c` is a vertex contact on a frictionless face that pushed in the last step and is
+/// predicted to push again.
+bool frictionlessVertexContact(const Contact& c) {
+  return c.a == c.b && c.friction == 0.0 && c.friction_known && c.active;
+}
+
 }  // namespace
 
-void RestingContacts::select(const ContactSet& contacts, const std::vector<double>& inverse_mass) {
+void RestingContacts::select(const ContactSet& contacts, const std::vector<double>& inverse_mass,
+                             bool faces) {
   const std::vector<Contact>& list = contacts.contacts();
   const std::size_t n = inverse_mass.size();
   vertex_contact_.assign(n, -1);
   held_by_.assign(n, -1);
   held_.clear();
   target_.clear();
+  on_face_.clear();
+  on_face_mask_.assign(n, 0);
   for (std::size_t i = 0; i < list.size(); ++i) {
     const Contact& c = list[i];
     if (c.a != c.b) continue;
@@ -41,6 +50,11 @@ void RestingContacts::select(const ContactSet& contacts, const std::vector<doubl
       const Eigen::Vector3d anchor = c.anchor();
       target_.push_back(anchor +
                         (c.radius - c.side_normal.dot(anchor - c.side_point)) * c.side_normal);
+    } else if (faces && frictionlessVertexContact(c) && inverse_mass[c.a] > 0.0 &&
+               vertex_contact_[c.a] == static_cast<std::int32_t>(i)) {
+      held_by_[c.a] = static_cast<std::int32_t>(i);
+      on_face_mask_[c.a] = 1;
+      on_face_.push_back({c.a, c.side_normal, c.side_normal.dot(c.side_point) + c.radius});
     }
   }
   was_active_.resize(list.size());
@@ -48,7 +62,13 @@ void RestingContacts::select(const ContactSet& contacts, const std::vector<doubl
   for (std::size_t i = 0; i < list.size(); ++i) {
     const Contact& c = list[i];
     was_active_[i] = c.active ? 1 : 0;
-    handled_[i] = held_by_[c.a] >= 0 && held_by_[c.b] >= 0 ? 1 : 0;
+    // A segment point between two vertices on a frictionless face keeps its row.
+    const bool held =
+        held_by_[c.a] >= 0 && held_by_[c.b] >= 0 && !on_face_mask_[c.a] && !on_face_mask_[c.b];
+    handled_[i] = held || (c.a == c.b && on_face_mask_[c.a] != 0 &&
+                           held_by_[c.a] == static_cast<std::int32_t>(i))
+                      ? 1
+                      : 0;
   }
 }
 
@@ -67,6 +87,18 @@ void RestingContacts::hold(std::vector<Eigen::Vector3d>& position,
     position[held_[k]] = target_[k];
     inverse_mass[held_[k]] = 0.0;
   }
+  keepOnFaces(position);
+}
+
+void RestingContacts::keepOnFaces(std::vector<Eigen::Vector3d>& position) const {
+  for (const OnFace& f : on_face_) {
+    Eigen::Vector3d& x = position[f.vertex];
+    x -= (f.normal.dot(x) - f.offset) * f.normal;
+  }
+}
+
+void RestingContacts::dropFaceNormals(std::vector<Eigen::Vector3d>& sum) const {
+  for (const OnFace& f : on_face_) sum[f.vertex] -= f.normal.dot(sum[f.vertex]) * f.normal;
 }
 
 bool RestingContacts::accept(ContactSet& contacts, const std::vector<Eigen::Vector3d>& position,
@@ -109,7 +141,8 @@ bool RestingContacts::accept(ContactSet& contacts, const std::vector<Eigen::Vect
         (position[c.a] - predicted[c.a]) / inverse_mass[c.a] - other_impulse_[c.a];
     const double normal = c.normal.dot(impulse);
     holds = normal > 0.0 && std::abs(c.gap) <= tolerance * c.scale;
-    for (int k = 0; k < Contact::kFrictionDirections && holds; ++k) {
+    // On a frictionless face the vertex moved within the face: no friction to bound.
+    for (int k = 0; k < Contact::kFrictionDirections && holds && !on_face_mask_[c.a]; ++k) {
       holds = std::abs(c.tangent[k].dot(impulse)) <= c.friction * normal;
     }
   }
@@ -127,7 +160,11 @@ bool RestingContacts::accept(ContactSet& contacts, const std::vector<Eigen::Vect
         (position[c.a] - predicted[c.a]) / inverse_mass[c.a] - other_impulse_[c.a];
     c.active = true;
     c.normal_multiplier = c.normal.dot(impulse);
-    c.friction_impulse = impulse - c.normal_multiplier * c.normal;
+    if (on_face_mask_[c.a]) {
+      c.friction_impulse.setZero();  // frictionless: its tangential part is the iterations'
+    } else {
+      c.friction_impulse = impulse - c.normal_multiplier * c.normal;
+    }
   }
   return true;
 }

@@ -21,6 +21,11 @@ namespace yarn_tearing {
 ///             static = kinetic, on a pyramid: each tangent bounded on its own). The same rows at
 ///             a vertex and at a segment point.
 struct Contact {
+  /// The members below with an initializer get it; the vectors without one are set by detection
+  /// (user-provided, so that building a record does not first zero all of it: a table's
+  /// thousand points a step).
+  Contact() {}  // NOLINT(modernize-use-equals-default)
+
   std::uint32_t a = 0;         ///< first vertex (global id)
   std::uint32_t b = 0;         ///< second vertex (= a for a vertex contact)
   double t = 0.0;              ///< weight of b in the contact point [-]

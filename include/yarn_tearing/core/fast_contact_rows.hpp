@@ -33,6 +33,8 @@ class FastContactRows {
               const std::vector<double>& inverse_mass);
   /// No rows selected.
   bool empty() const { return row_.empty(); }
+  /// Some row moves a vertex marked in `vertex_mask` (per vertex).
+  bool touches(const std::vector<std::uint8_t>& vertex_mask) const;
   /// Updates each row's direction and constraint value C [m] from `contacts`, linearized at
   /// `position` [m].
   void linearize(const ContactSet& contacts, const std::vector<Eigen::Vector3d>& position);

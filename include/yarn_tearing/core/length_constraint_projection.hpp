@@ -161,6 +161,9 @@ class LengthConstraintProjection {
   /// The contacts of fast_rows_ while projectContactsFast() runs the fast iterations, else null.
   ContactSet* fast_contacts_ = nullptr;
   std::vector<double> row_product_;  ///< K times the multipliers, per fast contact row [m]
+  /// While projectContactsFast() runs the fast iterations with vertices kept on frictionless
+  /// faces (RestingContacts): their corrections lose the normal component, no Newton steps.
+  bool on_faces_ = false;
   /// What projectContactsFast() restores when its guess fails.
   struct RestingFallback {
     std::vector<Eigen::Vector3d> position;  ///< the prediction [m]

@@ -30,7 +30,12 @@ struct Obstacle {
   void validate() const;
   /// Signed distance [m] from world point `p` to the surface (negative inside) and the outward
   /// unit normal there (the gradient of the distance).
-  double signedDistance(const Eigen::Vector3d& p, Eigen::Vector3d& normal) const;
+  double signedDistance(const Eigen::Vector3d& p, Eigen::Vector3d& normal) const {
+    if (shape != ObstacleShape::kPlane) return solidDistance(p, normal);
+    // The frame's z axis, without the whole change of frame (a table: a thousand points a step).
+    normal = pose.linear().col(2);
+    return normal.dot(p - pose.translation());
+  }
   /// Signed distance [m] from world point `p` to the surface, without the normal.
   double signedDistance(const Eigen::Vector3d& p) const;
   /// The Hessian of the signed distance at world point `p` outside the solid [1/m]: the
@@ -42,6 +47,10 @@ struct Obstacle {
   /// Radius of a ball about the pose's origin that holds the whole solid [m] (infinite for a
   /// plane), for quick rejection.
   double boundingRadius() const;
+
+ private:
+  /// signedDistance() of any shape, through the obstacle's frame [m].
+  double solidDistance(const Eigen::Vector3d& p, Eigen::Vector3d& normal) const;
 };
 
 }  // namespace yarn_tearing
