@@ -90,14 +90,16 @@ void ContactSet::detect(const Input& input) {
 bool ContactSet::clearOfReach(const Input& input, std::uint32_t obstacle, std::uint32_t a,
                               std::uint32_t b, const Eigen::Vector3d& middle, double half,
                               double scale) const {
-  // add() keeps a point p of the segment when its gap at the start (carried by the obstacle's
-  // motion) or at the prediction is within reach = scale + |move of p|. Every point of the
-  // segment is within `half` of the middle, and p moves by at most `move`, the larger of its
-  // ends' moves (p is their weighted mean): its predicted gap is at least
-  // distance(middle) - half - r, its start gap at least that less `move` (the distance is
-  // 1-Lipschitz). So a segment whose lower bound exceeds scale + 2 move is one add() would drop
-  // (and its normals at the start and the prediction are on the same side: a convex solid's
-  // normals at two points closer than either's distance make an angle below 90 degrees).
+  // add() keeps a segment's point when its gap at the prediction (at the predicted closest point
+  // p) or at the start (at the start segment's closest point s, carried by the obstacle's
+  // motion) is within reach = scale + |p - s|. Each end moves by at most `move` (start carried
+  // to prediction), so every point of the start segment is within `move` of the predicted
+  // segment's point of the same parameter, and |p - s| <= 2 half + move. Every predicted point
+  // is within `half` of the middle, so the predicted gap is at least
+  // lower = distance(middle) - half - r and the start gap at least lower - move (the distance is
+  // 1-Lipschitz). So a segment with lower > scale + 2 (half + move) is one add() would drop (and
+  // its normals at p and s are on the same side: a convex solid's normals at two points closer
+  // than either's distance make an angle below 90 degrees).
   const Eigen::Isometry3d& motion = motion_[obstacle];
   const std::vector<Eigen::Vector3d>& start = *input.start;
   const std::vector<Eigen::Vector3d>& predicted = *input.predicted;
@@ -105,7 +107,7 @@ bool ContactSet::clearOfReach(const Input& input, std::uint32_t obstacle, std::u
                                (predicted[b] - motion * start[b]).norm());
   const double lower =
       (*input.obstacles)[obstacle].signedDistance(middle) - half - (*input.vertex_radius)[a];
-  return lower > scale + 2.0 * move;
+  return lower > scale + 2.0 * (half + move);
 }
 
 void ContactSet::add(const Input& input, std::uint32_t obstacle, std::uint32_t a, std::uint32_t b,
