@@ -79,10 +79,6 @@ class LengthConstraintProjection {
 
   /// Force each edge's constraint exerted in the last projection [N] (0 where inactive).
   double constraintForce(std::size_t e) const { return multiplier_[e] / time_step2_; }
-  /// Strain limit s each edge was held to in the last projection [-].
-  double strainLimit(std::size_t e, const EdgeSet& edges) const {
-    return stretch_state_.limit(e, multiplier_[e]) / edges.rest_length[e] - 1.0;
-  }
 
  private:
   /// The fast path for contacts: the vertices that stuck on a face in the last step held where
