@@ -184,7 +184,8 @@ auto capstanCases(double dt) {
 INSTANTIATE_TEST_SUITE_P(Angles, FrictionWrap, capstanCases(1e-3));
 INSTANTIATE_TEST_SUITE_P(Angles, FrictionSlide, capstanCases(1e-3));
 // At dt = 1e-2 the 3 % harder pull takes the light yarn (0.05 mg vertices, 1 mm chords) off
-// the post within one step: holding only.
+// the post within one step: holding only (the slide with a weight on the held side, as a lab
+// measures it: capstan_slide_test.cpp).
 INSTANTIATE_TEST_SUITE_P(LargeStep, FrictionWrap, capstanCases(1e-2));
 INSTANTIATE_TEST_SUITE_P(SmallStep, FrictionHoldThenSlide, capstanCases(1e-4));
 
