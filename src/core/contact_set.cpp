@@ -4,6 +4,8 @@
 #include <cmath>
 #include <tuple>
 
+#include "yarn_tearing/core/edge_rounding.hpp"
+
 namespace yarn_tearing {
 namespace {
 
@@ -63,7 +65,8 @@ void ContactSet::detect(const Input& input) {
         obstacle.shape == ObstacleShape::kSphere || obstacle.shape == ObstacleShape::kCapsule;
     for (std::uint32_t v = 0; v < predicted.size() && !round; ++v) {
       if (w[v] == 0.0 || scale_[v] == 0.0 || far(predicted[v], v, 0.0)) continue;
-      add(input, o, v, v, 0.0, scale_[v]);
+      add(input, o, v, v, 0.0, scale_[v],
+          contactRounding(obstacle, (*input.vertex_radius)[v], scale_[v]));
     }
     if (obstacle.shape == ObstacleShape::kPlane) continue;
     for (std::size_t e = 0; e < edges.size(); ++e) {
@@ -79,9 +82,11 @@ void ContactSet::detect(const Input& input) {
           clearOfReach(input, o, a, b, middle, half, edges.rest_length[e])) {
         continue;
       }
-      const double t = obstacle.closestOnSegment(xa, xb);
+      const double rounding =
+          contactRounding(obstacle, (*input.vertex_radius)[a], edges.rest_length[e]);
+      const double t = obstacle.closestOnSegment(xa, xb, rounding);
       if (round || (t > kEndFraction && t < 1.0 - kEndFraction)) {
-        add(input, o, a, b, t, edges.rest_length[e]);
+        add(input, o, a, b, t, edges.rest_length[e], rounding);
       }
     }
   }
@@ -111,7 +116,7 @@ bool ContactSet::clearOfReach(const Input& input, std::uint32_t obstacle, std::u
 }
 
 void ContactSet::add(const Input& input, std::uint32_t obstacle, std::uint32_t a, std::uint32_t b,
-                     double t, double scale) {
+                     double t, double scale, double rounding) {
   const Obstacle& o = (*input.obstacles)[obstacle];
   const double radius = (*input.vertex_radius)[a];
   const std::vector<Eigen::Vector3d>& start_position = *input.start;
@@ -126,18 +131,19 @@ void ContactSet::add(const Input& input, std::uint32_t obstacle, std::uint32_t a
   const Eigen::Vector3d start_b = a == b ? start_a : Eigen::Vector3d(motion * start_position[b]);
   double start_t = t;
   if (a != b) {
-    start_t = o.closestOnSegment(start_a, start_b);
+    start_t = o.closestOnSegment(start_a, start_b, rounding);
     if (o.shape == ObstacleShape::kBox) {
       start_t = std::clamp(start_t, kEndFraction, 1.0 - kEndFraction);
     }
   }
   const Eigen::Vector3d start = (1.0 - start_t) * start_a + start_t * start_b;
   Eigen::Vector3d side_normal;
-  const double start_distance = o.signedDistance(start, side_normal);
+  const double start_distance = o.signedDistance(start, side_normal, rounding);
   const Eigen::Vector3d side_point = start - start_distance * side_normal;
   Eigen::Vector3d normal;
   const Eigen::Vector3d predicted = (1.0 - t) * predicted_position[a] + t * predicted_position[b];
-  const double predicted_gap = sideDistance(o, side_normal, side_point, predicted, normal) - radius;
+  const double predicted_gap =
+      sideDistance(o, rounding, side_normal, side_point, predicted, normal) - radius;
   const double reach = scale + (predicted - start).norm();
   if (std::min(start_distance - radius, predicted_gap) > reach) return;
   // Built in place: a table's thousand points a step.
@@ -149,6 +155,7 @@ void ContactSet::add(const Input& input, std::uint32_t obstacle, std::uint32_t a
   c.radius = radius;
   c.scale = scale;
   c.friction = o.friction;
+  c.rounding = rounding;
   c.side_normal = side_normal;
   c.side_point = side_point;
   // A point touching at the start sticks where it was; one arriving, where it arrives.
@@ -186,10 +193,11 @@ void ContactSet::carryFrictionStates(Contact& c) {
   c.friction_known = true;
 }
 
-double ContactSet::sideDistance(const Obstacle& obstacle, const Eigen::Vector3d& side_normal,
+double ContactSet::sideDistance(const Obstacle& obstacle, double rounding,
+                                const Eigen::Vector3d& side_normal,
                                 const Eigen::Vector3d& side_point, const Eigen::Vector3d& p,
                                 Eigen::Vector3d& normal) {
-  const double d = obstacle.signedDistance(p, normal);
+  const double d = obstacle.signedDistance(p, normal, rounding);
   if (normal.dot(side_normal) >= 0.0) return d;
   // Through to the other side (a thin peg, a fast yarn): hold it on the side it came from.
   normal = side_normal;
@@ -208,7 +216,7 @@ void ContactSet::linearize(const std::vector<Eigen::Vector3d>& x) {
     bool at_end = false;
     const bool box = (*obstacles_)[c.obstacle].shape == ObstacleShape::kBox;
     if (c.a != c.b) {
-      const double t = (*obstacles_)[c.obstacle].closestOnSegment(x[c.a], x[c.b]);
+      const double t = (*obstacles_)[c.obstacle].closestOnSegment(x[c.a], x[c.b], c.rounding);
       if (box) {
         at_end = t <= kEndFraction || t >= 1.0 - kEndFraction;
         c.t = std::clamp(t, kEndFraction, 1.0 - kEndFraction);
@@ -216,9 +224,9 @@ void ContactSet::linearize(const std::vector<Eigen::Vector3d>& x) {
         c.t = t;
       }
     }
-    c.gap =
-        sideDistance((*obstacles_)[c.obstacle], c.side_normal, c.side_point, c.point(x), c.normal) -
-        c.radius;
+    c.gap = sideDistance((*obstacles_)[c.obstacle], c.rounding, c.side_normal, c.side_point,
+                         c.point(x), c.normal) -
+            c.radius;
     c.enabled = !at_end;
     if (at_end) {
       // The segment's closest point has moved to an end, whose vertex contact holds it: two
@@ -246,7 +254,7 @@ void ContactSet::linearize(const std::vector<Eigen::Vector3d>& x) {
 bool ContactSet::closestPointTurn(const Contact& c, const std::vector<Eigen::Vector3d>& x,
                                   Eigen::Matrix<double, 6, 1>& derivative, double& second) const {
   if (c.a == c.b || !(c.t > 0.0 && c.t < 1.0)) return false;
-  if ((*obstacles_)[c.obstacle].shape == ObstacleShape::kBox) return false;
+  if ((*obstacles_)[c.obstacle].shape == ObstacleShape::kBox && !(c.rounding > 0.0)) return false;
   const Eigen::Vector3d e = x[c.b] - x[c.a];
   const Eigen::Matrix3d h = curvature(c, x);
   second = e.dot(h * e);

@@ -10,6 +10,9 @@ namespace {
 
 constexpr double kLargestSize = 1.0e4;  ///< [m], as the yarns' coordinates
 
+/// Newton steps that polish a segment's closest point on a box after the golden-section search.
+constexpr int kClosestPointPolish = 3;
+
 void requireSize(const std::string& name, const char* field, double value) {
   if (!(value > 0.0 && value <= kLargestSize)) {
     throw std::invalid_argument("obstacle '" + name + "': " + field +
@@ -17,9 +20,17 @@ void requireSize(const std::string& name, const char* field, double value) {
   }
 }
 
+/// How far a box is shrunk to round its edges by `rounding` [m]: at most its smallest half
+/// extent, so that the faces stay where they are.
+double boxRounding(const Obstacle& o, double rounding) {
+  return std::min(rounding, o.half_extents.minCoeff());
+}
+
 /// Signed distance of a point in the obstacle's frame, with its outward normal (obstacle frame)
-/// unless `normal` is null (detection's quick rejection needs the distance only).
-double localDistance(const Obstacle& o, const Eigen::Vector3d& p, Eigen::Vector3d* normal) {
+/// unless `normal` is null (detection's quick rejection needs the distance only); a box's edges
+/// and corners rounded by `rounding` [m].
+double localDistance(const Obstacle& o, const Eigen::Vector3d& p, Eigen::Vector3d* normal,
+                     double rounding) {
   switch (o.shape) {
     case ObstacleShape::kPlane:
       if (normal != nullptr) *normal = Eigen::Vector3d::UnitZ();
@@ -37,12 +48,15 @@ double localDistance(const Obstacle& o, const Eigen::Vector3d& p, Eigen::Vector3
       return r - o.radius;
     }
     case ObstacleShape::kBox: {
-      const Eigen::Vector3d q = p.cwiseAbs() - o.half_extents;
+      // The box shrunk by s, then every distance less s: faces unchanged, edges and corners
+      // rounded to radius s.
+      const double s = boxRounding(o, rounding);
+      const Eigen::Vector3d q = p.cwiseAbs() - (o.half_extents.array() - s).matrix();
       const Eigen::Vector3d outside = q.cwiseMax(0.0);
       const double out = outside.norm();
       if (out > 0.0) {
         if (normal != nullptr) *normal = outside.cwiseProduct(p.cwiseSign()) / out;
-        return out;
+        return out - s;
       }
       Eigen::Index axis = 0;
       const double in = q.maxCoeff(&axis);  // <= 0: the nearest face
@@ -50,7 +64,7 @@ double localDistance(const Obstacle& o, const Eigen::Vector3d& p, Eigen::Vector3
         *normal = Eigen::Vector3d::Zero();
         (*normal)[axis] = p[axis] >= 0.0 ? 1.0 : -1.0;
       }
-      return in;
+      return in - s;
     }
   }
   if (normal != nullptr) *normal = Eigen::Vector3d::UnitZ();
@@ -104,6 +118,11 @@ void Obstacle::validate() const {
       break;
     case ObstacleShape::kBox:
       for (int i = 0; i < 3; ++i) requireSize(name, "half_extents", half_extents[i]);
+      if (!(edge_radius >= 0.0 && edge_radius <= half_extents.minCoeff())) {
+        throw std::invalid_argument("obstacle '" + name +
+                                    "': edge_radius must be a finite number in [0, the smallest "
+                                    "half extent] [m]");
+      }
       break;
     case ObstacleShape::kSphere:
       requireSize(name, "radius", radius);
@@ -115,19 +134,20 @@ void Obstacle::validate() const {
   }
 }
 
-double Obstacle::solidDistance(const Eigen::Vector3d& p, Eigen::Vector3d& normal) const {
+double Obstacle::solidDistance(const Eigen::Vector3d& p, Eigen::Vector3d& normal,
+                               double rounding) const {
   Eigen::Vector3d local_normal;
-  const double distance = localDistance(*this, toLocal(pose, p), &local_normal);
+  const double distance = localDistance(*this, toLocal(pose, p), &local_normal, rounding);
   normal = pose.linear() * local_normal;
   return distance;
 }
 
-double Obstacle::signedDistance(const Eigen::Vector3d& p) const {
-  return localDistance(*this, toLocal(pose, p), nullptr);
+double Obstacle::signedDistance(const Eigen::Vector3d& p, double rounding) const {
+  return localDistance(*this, toLocal(pose, p), nullptr, rounding);
 }
 
-double Obstacle::closestOnSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
-  Eigen::Vector3d normal;
+double Obstacle::closestOnSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                  double rounding) const {
   const Eigen::Vector3d la = toLocal(pose, a);
   const Eigen::Vector3d ab = pose.linear().transpose() * (b - a);
   const double ab2 = ab.squaredNorm();
@@ -148,36 +168,51 @@ double Obstacle::closestOnSegment(const Eigen::Vector3d& a, const Eigen::Vector3
   double hi = 1.0;
   double t1 = hi - kInverseGolden * (hi - lo);
   double t2 = lo + kInverseGolden * (hi - lo);
-  double f1 = signedDistance(a + t1 * (b - a), normal);
-  double f2 = signedDistance(a + t2 * (b - a), normal);
+  double f1 = signedDistance(a + t1 * (b - a), rounding);
+  double f2 = signedDistance(a + t2 * (b - a), rounding);
   for (int i = 0; i < 40; ++i) {
     if (f1 <= f2) {
       hi = t2;
       t2 = t1;
       f2 = f1;
       t1 = hi - kInverseGolden * (hi - lo);
-      f1 = signedDistance(a + t1 * (b - a), normal);
+      f1 = signedDistance(a + t1 * (b - a), rounding);
     } else {
       lo = t1;
       t1 = t2;
       f1 = f2;
       t2 = lo + kInverseGolden * (hi - lo);
-      f2 = signedDistance(a + t2 * (b - a), normal);
+      f2 = signedDistance(a + t2 * (b - a), rounding);
     }
   }
-  const double t = 0.5 * (lo + hi);
-  const double ft = signedDistance(a + t * (b - a), normal);
-  const double fa = signedDistance(a, normal);
-  const double fb = signedDistance(b, normal);
+  double t = 0.5 * (lo + hi);
+  const double ft = signedDistance(a + t * (b - a), rounding);
+  const double fa = signedDistance(a, rounding);
+  const double fb = signedDistance(b, rounding);
   if (fa <= ft && fa <= fb) return 0.0;
   if (fb <= ft) return 1.0;
+  // The search leaves t uncertain by 0.618^40 = 4e-9; where the surface curves (a rounded edge)
+  // the normal there is then off perpendicular to the segment by that much, which a Newton
+  // solve of the contact rows cannot settle (its force balance stalled at 1e-3 of an edge).
+  // Newton steps on d/dt distance = n . (b - a) make it exact.
+  const Eigen::Vector3d e = b - a;
+  for (int i = 0; i < kClosestPointPolish; ++i) {
+    const Eigen::Vector3d p = a + t * e;
+    const double second = e.dot(curvature(p, rounding) * e);
+    if (!(second > 0.0)) break;
+    Eigen::Vector3d normal;
+    signedDistance(p, normal, rounding);
+    const double next = std::clamp(t - normal.dot(e) / second, 0.0, 1.0);
+    if (next == t) break;
+    t = next;
+  }
   return t;
 }
 
-Eigen::Matrix3d Obstacle::curvature(const Eigen::Vector3d& p) const {
+Eigen::Matrix3d Obstacle::curvature(const Eigen::Vector3d& p, double rounding) const {
   const Eigen::Vector3d local = toLocal(pose, p);
   Eigen::Vector3d normal;
-  const double distance = localDistance(*this, local, &normal) + radius;
+  const double distance = localDistance(*this, local, &normal, rounding) + radius;
   const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - normal * normal.transpose();
   Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
   switch (shape) {
@@ -196,8 +231,9 @@ Eigen::Matrix3d Obstacle::curvature(const Eigen::Vector3d& p) const {
       }
       break;
     case ObstacleShape::kBox: {
-      // Outside an edge or a corner the distance is to a line or a point.
-      const Eigen::Vector3d q = local.cwiseAbs() - half_extents;
+      // Outside an edge or a corner of the shrunk box the distance is to a line or a point.
+      const Eigen::Vector3d q =
+          local.cwiseAbs() - (half_extents.array() - boxRounding(*this, rounding)).matrix();
       const Eigen::Vector3d outside = q.cwiseMax(0.0);
       const double d = outside.norm();
       const int count = (outside.array() > 0.0).count();

@@ -33,7 +33,10 @@ struct Contact {
   double radius = 0.0;         ///< yarn radius r [m]
   double scale = 0.0;          ///< length the tolerances are relative to (edge length) [m]
   double friction = 0.0;       ///< mu [-]
-  Eigen::Vector3d normal;      ///< outward normal at the current linearization
+  /// How much further than r the point keeps from a box's edges and corners [m]
+  /// (contactRounding, edge_rounding.hpp; 0 on other shapes).
+  double rounding = 0.0;
+  Eigen::Vector3d normal;  ///< outward normal at the current linearization
   /// Unit tangents, normal x tangent[0] = tangent[1] (tangent[0] along the segment if any).
   Eigen::Vector3d tangent[2];
   double gap = 0.0;  ///< distance - r at the current linearization [m]
@@ -96,7 +99,7 @@ class ContactSet {
   void linearize(const std::vector<Eigen::Vector3d>& x);
   /// The curvature (Hessian of the distance) of contact `c`'s obstacle at its point [1/m].
   Eigen::Matrix3d curvature(const Contact& c, const std::vector<Eigen::Vector3d>& x) const {
-    return (*obstacles_)[c.obstacle].curvature(c.point(x));
+    return (*obstacles_)[c.obstacle].curvature(c.point(x), c.rounding);
   }
   /// For a segment point inside its segment on a round solid, where the closest point moves
   /// along the segment as the segment turns: the segment's distance d(x_a, x_b) = min over t of
@@ -127,12 +130,13 @@ class ContactSet {
 
  private:
   void add(const Input& input, std::uint32_t obstacle, std::uint32_t a, std::uint32_t b, double t,
-           double scale);
-  /// Distance [m] from `obstacle` and the normal at point `p`, on the side the step started
-  /// (the point's outward normal `side_normal` and surface point `side_point` [m] there).
-  static double sideDistance(const Obstacle& obstacle, const Eigen::Vector3d& side_normal,
-                             const Eigen::Vector3d& side_point, const Eigen::Vector3d& p,
-                             Eigen::Vector3d& normal);
+           double scale, double rounding);
+  /// Distance [m] from `obstacle` (edges rounded by `rounding` [m]) and the normal at point `p`,
+  /// on the side the step started (the point's outward normal `side_normal` and surface point
+  /// `side_point` [m] there).
+  static double sideDistance(const Obstacle& obstacle, double rounding,
+                             const Eigen::Vector3d& side_normal, const Eigen::Vector3d& side_point,
+                             const Eigen::Vector3d& p, Eigen::Vector3d& normal);
   /// True when no point of segment (a, b), whose predicted middle is `middle` [m] and half
   /// length `half` [m], can come within add()'s reach of `obstacle` (`scale` [m] as add()'s):
   /// a bound from the obstacle's distance at the middle, before the closest point is sought.

@@ -25,32 +25,42 @@ struct Obstacle {
   double radius = 0.01;                                            ///< sphere or capsule radius [m]
   double half_length = 0.05;  ///< capsule: half the length of its axis segment [m]
   double friction = 0.0;      ///< Coulomb friction coefficient mu [-] (static = kinetic)
+  /// Box: radius of its edges and corners [m] (a real table's edge is rounded), in
+  /// [0, smallest half extent]; its faces stay where half_extents puts them. The contact rounds
+  /// them further where the yarn's mesh needs it (edge_rounding.hpp).
+  double edge_radius = 0.0;
 
   /// Throws std::invalid_argument naming the field and what is allowed.
   void validate() const;
   /// Signed distance [m] from world point `p` to the surface (negative inside) and the outward
-  /// unit normal there (the gradient of the distance).
-  double signedDistance(const Eigen::Vector3d& p, Eigen::Vector3d& normal) const {
-    if (shape != ObstacleShape::kPlane) return solidDistance(p, normal);
+  /// unit normal there (the gradient of the distance). `rounding` [m] rounds a box's edges and
+  /// corners to that radius, its faces unchanged (the distance to the box shrunk by `rounding`,
+  /// less `rounding`; at most the smallest half extent); the other shapes ignore it.
+  double signedDistance(const Eigen::Vector3d& p, Eigen::Vector3d& normal,
+                        double rounding = 0.0) const {
+    if (shape != ObstacleShape::kPlane) return solidDistance(p, normal, rounding);
     // The frame's z axis, without the whole change of frame (a table: a thousand points a step).
     normal = pose.linear().col(2);
     return normal.dot(p - pose.translation());
   }
-  /// Signed distance [m] from world point `p` to the surface, without the normal.
-  double signedDistance(const Eigen::Vector3d& p) const;
+  /// Signed distance [m] from world point `p` to the surface, without the normal (`rounding`
+  /// [m] as above).
+  double signedDistance(const Eigen::Vector3d& p, double rounding = 0.0) const;
   /// The Hessian of the signed distance at world point `p` outside the solid [1/m]: the
-  /// surface's curvature there (0 on a plane or a box face).
-  Eigen::Matrix3d curvature(const Eigen::Vector3d& p) const;
+  /// surface's curvature there (0 on a plane or a box face; `rounding` [m] as above).
+  Eigen::Matrix3d curvature(const Eigen::Vector3d& p, double rounding = 0.0) const;
   /// The parameter t in [0, 1] of the point (1 - t) a + t b of segment ab closest to the
-  /// obstacle (smallest signed distance; the distance to a convex solid is convex along a line).
-  double closestOnSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
+  /// obstacle (smallest signed distance; the distance to a convex solid is convex along a line;
+  /// `rounding` [m] as above).
+  double closestOnSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                          double rounding = 0.0) const;
   /// Radius of a ball about the pose's origin that holds the whole solid [m] (infinite for a
   /// plane), for quick rejection.
   double boundingRadius() const;
 
  private:
   /// signedDistance() of any shape, through the obstacle's frame [m].
-  double solidDistance(const Eigen::Vector3d& p, Eigen::Vector3d& normal) const;
+  double solidDistance(const Eigen::Vector3d& p, Eigen::Vector3d& normal, double rounding) const;
 };
 
 }  // namespace yarn_tearing
