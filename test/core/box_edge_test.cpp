@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "contact_test_support.hpp"
@@ -110,6 +111,50 @@ LoadedRun load(Ridge& r, double mu, double ratio, double dt) {
   }
   run.travel = (r.sim.scene().vertices.position.front() - start).dot(-r.tail_a);
   return run;
+}
+
+// The rounded box's geometry: faces where half_extents put them, an edge a quarter cylinder of
+// the rounding's radius about the shrunk box's edge, a corner a ball; its curvature 1/distance
+// across the edge; a segment's closest point exact; an edge_radius beyond the smallest half
+// extent refused.
+TEST(RoundedBox, FacesStayEdgesAndCornersAreRounded) {
+  Obstacle box = obstacleAt(ObstacleShape::kBox, Eigen::Vector3d::Zero(), 0.0);
+  box.half_extents = Eigen::Vector3d(0.01, 0.02, 0.03);
+  const double s = 0.004;
+  Eigen::Vector3d normal;
+  // A face: unchanged.
+  EXPECT_NEAR(box.signedDistance(Eigen::Vector3d(0.012, 0.0, 0.0), normal, s), 0.002, 1e-15);
+  EXPECT_NEAR(box.signedDistance(Eigen::Vector3d(0.009, 0.001, 0.0), normal, s), -0.001, 1e-15);
+  // Off the x-y edge along the diagonal: the fillet about (0.006, 0.016, z).
+  const Eigen::Vector3d axis(0.006, 0.016, 0.0);
+  const Eigen::Vector3d out = Eigen::Vector3d(1.0, 1.0, 0.0).normalized();
+  const Eigen::Vector3d p = axis + (s + 0.001) * out;
+  EXPECT_NEAR(box.signedDistance(p, normal, s), 0.001, 1e-15);
+  EXPECT_NEAR((normal - out).norm(), 0.0, 1e-15);
+  // The sharp box's corner is cut: the point is inside it (the yarn passes nearer its edge).
+  EXPECT_NEAR(box.signedDistance(p, normal, 0.0), p.y() - 0.02, 1e-15);
+  const Eigen::Matrix3d h = box.curvature(p, s);
+  EXPECT_NEAR(h(2, 2), 0.0, 1e-12);  // along the edge
+  const Eigen::Vector3d across(-out.y(), out.x(), 0.0);
+  EXPECT_NEAR(across.dot(h * across), 1.0 / (s + 0.001), 1e-9);
+  // A corner: a ball about the shrunk box's corner.
+  const Eigen::Vector3d corner(0.006, 0.016, 0.026);
+  EXPECT_NEAR(box.signedDistance(corner + 0.005 * Eigen::Vector3d::Ones().normalized(), s), 0.001,
+              1e-15);
+  // A segment across the edge: its closest point where it is nearest the fillet's axis.
+  const Eigen::Vector3d a = p + 0.003 * across + 0.001 * Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d b = p - 0.005 * across + 0.001 * Eigen::Vector3d::UnitZ();
+  EXPECT_NEAR(box.closestOnSegment(a, b, s), 3.0 / 8.0, 1e-12);
+  // edge_radius: the box's own rounding, within its smallest half extent.
+  box.edge_radius = 0.01;
+  EXPECT_NO_THROW(box.validate());
+  EXPECT_NEAR(contactRounding(box, 1e-4, 1e-3), 0.01, 1e-15);
+  box.edge_radius = 0.0;
+  EXPECT_NEAR(contactRounding(box, 1e-4, 1e-3), kEdgeRoundingChords * 1e-3 - 1e-4, 1e-15);
+  box.edge_radius = 0.0101;
+  EXPECT_THROW(box.validate(), std::invalid_argument);
+  box.shape = ObstacleShape::kCapsule;
+  EXPECT_EQ(contactRounding(box, 1e-4, 1e-3), 0.0);
 }
 
 struct EdgeCase {
