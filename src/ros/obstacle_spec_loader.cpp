@@ -48,7 +48,11 @@ std::vector<std::string> loadShape(const ParamValue& entry, Obstacle& obstacle) 
         half_extents.fail("a list of 3 half sizes [x, y, z], each in [1e-6, 1e4] [m]");
       }
       obstacle.half_extents = h;
-      return {"half_extents"};
+      if (entry.has("edge_radius")) {
+        // Within the smallest half extent, so that the faces stay where half_extents puts them.
+        obstacle.edge_radius = entry.member("edge_radius").number(0.0, h.minCoeff(), "m");
+      }
+      return {"half_extents", "edge_radius"};
     }
     case ObstacleShape::kSphere:
       obstacle.radius = loadSize(entry.member("radius"));

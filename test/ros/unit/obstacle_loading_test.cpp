@@ -75,7 +75,22 @@ TEST(ObstacleSpecLoader, AnAttachedObstacleKeepsItsPoseAsAnOffset) {
   EXPECT_EQ(spec.attached_frame, "gripper_link");
   EXPECT_TRUE(spec.offset.translation().isApprox(Eigen::Vector3d(0.0, 0.0, -0.03)));
   EXPECT_TRUE(spec.obstacle.half_extents.isApprox(Eigen::Vector3d(0.01, 0.02, 0.03)));
-  EXPECT_DOUBLE_EQ(spec.obstacle.friction, 0.0);  // default
+  EXPECT_DOUBLE_EQ(spec.obstacle.friction, 0.0);     // default
+  EXPECT_DOUBLE_EQ(spec.obstacle.edge_radius, 0.0);  // default: sharp
+}
+
+/// A box of half sizes (0.02, 0.03, 0.04) [m] with edges rounded to `edge_radius` [m].
+XmlRpc::XmlRpcValue boxWithEdgeRadius(double edge_radius) {
+  XmlRpc::XmlRpcValue obstacle;
+  obstacle["name"] = "table";
+  obstacle["shape"] = "box";
+  obstacle["half_extents"] = list({0.02, 0.03, 0.04});
+  obstacle["edge_radius"] = edge_radius;
+  return obstacle;
+}
+
+TEST(ObstacleSpecLoader, ABoxTakesItsEdgeRadius) {
+  EXPECT_DOUBLE_EQ(loadObstacleSpec(param(boxWithEdgeRadius(0.005))).obstacle.edge_radius, 0.005);
 }
 
 /// A capsule with `key` set to `value`.
@@ -107,7 +122,9 @@ TEST(ObstacleSpecLoader, ErrorsNameTheParameterAndWhatIsAllowed) {
       {capsuleWith("shape", "cylinder"), "'plane' or 'box' or 'sphere' or 'capsule'"},
       {box(list({0.1, 0.1, 0.1}), 0.1),
        "obstacles[1].radius: unknown key 'radius'; allowed keys: name, shape, friction, "
-       "position, rpy, attached_frame, half_extents"},
+       "position, rpy, attached_frame, half_extents, edge_radius"},
+      {boxWithEdgeRadius(0.03),
+       "obstacles[1].edge_radius = 0.03: expected a finite number in [0, 0.02] [m]"},
       {box(list({0.1, 0.0, 0.1}), 0.0),
        "obstacles[1].half_extents = [0.1, 0.0, 0.1]: expected a list of 3 half sizes"},
       {capsuleWith("name", "a peg"), "obstacles[1].name = 'a peg': expected a name of"},
