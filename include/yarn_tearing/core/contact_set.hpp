@@ -106,8 +106,8 @@ class ContactSet {
   /// distance((1 - t) x_a + t x_b) has the Hessian
   ///   Hess(distance at fixed t) - derivative derivative^T / second,
   /// with `derivative` = d/dt of the gradient on (x_a, x_b) [-, 1/m] (6 entries) and `second` =
-  /// d^2 distance / dt^2 [m]. False where t does not move (a vertex, a segment's end, a box, a
-  /// segment along a capsule's axis).
+  /// d^2 distance / dt^2 [m]. False where t does not move (a vertex, a segment's end, a box's face
+  /// or sharp edge, a segment along a capsule's axis).
   bool closestPointTurn(const Contact& c, const std::vector<Eigen::Vector3d>& x,
                         Eigen::Matrix<double, 6, 1>& derivative, double& second) const;
   /// Largest penetration, relative to each contact's length scale [-] (0 if none).
