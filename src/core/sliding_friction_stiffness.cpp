@@ -56,4 +56,30 @@ bool slidingFrictionStiffness(const ContactSet& contacts, const Contact& c,
   return true;
 }
 
+bool stickingRowTurn(const ContactSet& contacts, const Contact& c, int k,
+                     const Eigen::Vector3d& slip, const std::vector<Eigen::Vector3d>& position,
+                     Eigen::Vector3d& on_a, Eigen::Vector3d& on_b) {
+  if (c.a == c.b) return false;
+  const Eigen::Vector3d& n = c.normal;
+  const Eigen::Vector3d& tau = c.tangent[0];
+  const Eigen::Vector3d axis = position[c.b] - position[c.a];
+  const double across = (axis - n.dot(axis) * n).norm();
+  if (!(across > 1e-9 * axis.norm())) return false;
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  // d tau_k = turn_k de + roll_k dp (de = dx_b - dx_a, dp = (1 - t) dx_a + t dx_b).
+  Eigen::Matrix3d turn =
+      (1.0 / across) * (identity - tau * tau.transpose()) * (identity - n * n.transpose());
+  const Eigen::Matrix3d curvature = contacts.curvature(c, position);
+  Eigen::Matrix3d roll = -n * tau.transpose() * curvature;
+  if (k == 1) {
+    turn = crossMatrix(n) * turn;
+    roll = -crossMatrix(tau) * curvature;
+  }
+  const Eigen::Vector3d turned = turn.transpose() * slip;
+  const Eigen::Vector3d rolled = roll.transpose() * slip;
+  on_a = turned - (1.0 - c.t) * rolled;
+  on_b = -turned - c.t * rolled;
+  return true;
+}
+
 }  // namespace yarn_tearing

@@ -377,6 +377,19 @@ void StiffNewtonStep::addContactRows(const ContactSet& contacts,
       }
     }
     if (sliding.isZero()) continue;
+    // A point that slides along one tangent and sticks along the other has slipped far from its
+    // anchor: the sticking row's tangent turning with the segment and the surface changes the
+    // row by s . d tau_k, which its gradient needs (the system is unsymmetric here anyway).
+    for (int k = 0; k < Contact::kFrictionDirections; ++k) {
+      const int r = friction_row_[i][k];
+      Eigen::Vector3d on_a;
+      Eigen::Vector3d on_b;
+      if (r < 0 || !stickingRowTurn(contacts, c, k, slip, position, on_a, on_b)) continue;
+      for (int j = 0; j < 3; ++j) {
+        if (ra >= 0) triplets_.emplace_back(r, ra + j, on_a[j]);
+        if (rb >= 0) triplets_.emplace_back(r, rb + j, on_b[j]);
+      }
+    }
     unsymmetric_ = true;
     const int rn = normal_row_[i];
     for (int k = 0; k < 3; ++k) {

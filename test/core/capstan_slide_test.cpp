@@ -3,7 +3,7 @@
 // tail), end A pulled with T2 = 1.03 T1 e^(mu theta), T1 = m1 g. With kinetic friction mu the
 // tension falls by e^(-mu theta) round the wrap, so the weight rises with
 // a = (T2 e^(-mu theta) - m1 g) / m1 (the yarn's 2-3 mg beside the 51 g weight neglected).
-// Checked at dt 1e-4, 1e-3 (every sliding step in one solve) and 1e-2.
+// Checked at dt 1e-4, 1e-3 and 1e-2, every sliding step in one solve.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -103,13 +103,7 @@ auto slideCases(double dt, bool one_solve) {
 }
 INSTANTIATE_TEST_SUITE_P(SmallStep, CapstanSlide, slideCases(1e-4, true));
 INSTANTIATE_TEST_SUITE_P(Angles, CapstanSlide, slideCases(1e-3, true));
-// At dt = 1e-2: pi / 2 in one solve; at pi some sliding steps converge only through departure
-// 11's retry, and 2 pi is left out (its sliding steps do not converge; README, Known limits).
-INSTANTIATE_TEST_SUITE_P(LargeStep, CapstanSlide,
-                         ::testing::Values(SlideCase{kPi / 2.0, 0.1, 1e-2, true},
-                                           SlideCase{kPi / 2.0, 0.3, 1e-2, true},
-                                           SlideCase{kPi, 0.1, 1e-2, false},
-                                           SlideCase{kPi, 0.3, 1e-2, false}));
+INSTANTIATE_TEST_SUITE_P(LargeStep, CapstanSlide, slideCases(1e-2, true));
 
 }  // namespace
 }  // namespace yarn_tearing::test

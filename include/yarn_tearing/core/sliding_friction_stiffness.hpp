@@ -30,4 +30,14 @@ bool slidingFrictionStiffness(const ContactSet& contacts, const Contact& c,
                               const std::vector<Eigen::Vector3d>& position,
                               SlidingFrictionStiffness& blocks);
 
+/// The part of a sticking friction row's gradient that comes from its tangent turning: the row
+/// is C_k = -tau_k(x) . s, s = p - anchor the point's slip over the step [m], and
+/// dC_k = -tau_k . dp - s . d tau_k; this returns -s . d tau_k / dx_a and / dx_b [-] (tau_k turning
+/// with the segment and with the surface under the point, at fixed t, as in
+/// slidingFrictionStiffness). False where there is none (a vertex contact, a segment along the
+/// normal).
+bool stickingRowTurn(const ContactSet& contacts, const Contact& c, int k,
+                     const Eigen::Vector3d& slip, const std::vector<Eigen::Vector3d>& position,
+                     Eigen::Vector3d& on_a, Eigen::Vector3d& on_b);
+
 }  // namespace yarn_tearing
