@@ -382,6 +382,11 @@ ProjectionResult LengthConstraintProjection::projectFast(
       result.force_mismatch =
           forceMismatch(position, edges, fast_contacts_ != nullptr ? fast_contacts_ : contacts);
       result.converged = result.force_mismatch <= parameters.constraint_tolerance;
+      // Newton steps with contacts that have settled but for the force directions have stalled
+      // at the round-off of their solve (a wrap at (omega dt)^2 ~ 1e7): refine their solves.
+      if (!result.converged && contacts != nullptr && result.iterations > 0) {
+        newton_.refineSolves();
+      }
       use_newton = use_newton || !result.converged;
     }
     if (result.converged || result.iterations >= parameters.max_projection_iterations) break;

@@ -102,6 +102,12 @@ Eigen::Vector3d toLocal(const Eigen::Isometry3d& pose, const Eigen::Vector3d& p)
 
 }  // namespace
 
+bool Obstacle::sameGeometry(const Obstacle& other) const {
+  return shape == other.shape && pose.matrix() == other.pose.matrix() &&
+         half_extents == other.half_extents && radius == other.radius &&
+         half_length == other.half_length && edge_radius == other.edge_radius;
+}
+
 void Obstacle::validate() const {
   if (!pose.matrix().allFinite()) {
     throw std::invalid_argument("obstacle '" + name + "': pose must be finite");

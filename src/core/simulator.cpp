@@ -329,11 +329,18 @@ void Simulator::releaseVertex(std::uint32_t vertex) {
 
 void Simulator::setObstacles(const std::vector<Obstacle>& obstacles) {
   for (const Obstacle& o : obstacles) o.validate();
+  // The same solids where they were (only their friction or names changed): the contacts keep
+  // their friction states (a point new to a step is frictionless in its first Newton step,
+  // which let a wrap whose friction was switched on slip 2.7 chords in that Newton step).
+  bool same = obstacles.size() == obstacles_.size();
+  for (std::size_t i = 0; i < obstacles.size() && same; ++i) {
+    same = obstacles[i].sameGeometry(obstacles_[i]);
+  }
   obstacles_ = obstacles;
   previous_pose_.clear();
   for (const Obstacle& o : obstacles_) previous_pose_.push_back(o.pose);
   contact_wrench_.assign(obstacles_.size(), ContactWrench{});
-  work_.contacts.clear();
+  if (!same) work_.contacts.clear();
 }
 
 void Simulator::setObstaclePose(std::size_t index, const Eigen::Isometry3d& pose) {

@@ -116,7 +116,11 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     sliding_factorization_.lu.compute(matrix_);
     if (sliding_factorization_.lu.info() != Eigen::Success) return false;
     solution_ = sliding_factorization_.lu.solve(rhs_);
-    return solution_.allFinite();
+    if (!refine_) return solution_.allFinite();
+    return refine([this](const Eigen::VectorXd& rhs, Eigen::VectorXd& result) {
+      result = sliding_factorization_.lu.solve(rhs);
+      return result.allFinite();
+    });
   }
   if (banded_) {
     banded_factorization_.ldlt.compute(matrix_);
@@ -125,6 +129,11 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     return false;
   }
   if (!solveAssembled(rhs_, solution_)) return false;
+  if (refine_ && !refine([this](const Eigen::VectorXd& rhs, Eigen::VectorXd& result) {
+        return solveAssembled(rhs, result);
+      })) {
+    return false;
+  }
   if (start_.direction == nullptr) return true;
   // Ends that take the start direction make the exact system unsymmetric; the symmetric one
   // (current directions everywhere) differs from it by the small turn of each such edge in one

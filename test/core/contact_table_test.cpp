@@ -98,6 +98,24 @@ TEST(YarnOnFrictionlessTable, PulledAlongMovesAsAFreeBody) {
   EXPECT_LE(deepestPenetration(sim, sim.obstacles()[0]), 1e-4);
 }
 
+// setObstacles keeps the contacts' friction states for the same solids at the same poses.
+TEST(ObstacleGeometry, SameSolidAtTheSamePoseWhateverItsFrictionOrName) {
+  const Obstacle post = obstacleAt(ObstacleShape::kCapsule, Eigen::Vector3d::Zero(), 0.0);
+  Obstacle rough = post;
+  rough.friction = 0.3;
+  rough.name = "rough";
+  EXPECT_TRUE(post.sameGeometry(rough));
+  Obstacle moved = post;
+  moved.pose.translation().x() += 1e-9;
+  EXPECT_FALSE(post.sameGeometry(moved));
+  Obstacle thicker = post;
+  thicker.radius *= 1.5;
+  EXPECT_FALSE(post.sameGeometry(thicker));
+  Obstacle box = post;
+  box.shape = ObstacleShape::kBox;
+  EXPECT_FALSE(post.sameGeometry(box));
+}
+
 INSTANTIATE_TEST_SUITE_P(Table, YarnOnTable,
                          ::testing::Values(TableCase{1e-3, 25, 0.3}, TableCase{1e-4, 25, 0.3},
                                            TableCase{1e-3, 100, 0.3}, TableCase{1e-3, 25, 0.0}));

@@ -32,6 +32,9 @@ struct Obstacle {
 
   /// Throws std::invalid_argument naming the field and what is allowed.
   void validate() const;
+  /// True when `other` is the same solid at the same pose (shape, pose and sizes equal; name
+  /// and friction may differ).
+  bool sameGeometry(const Obstacle& other) const;
   /// Signed distance [m] from world point `p` to the surface (negative inside) and the outward
   /// unit normal there (the gradient of the distance). `rounding` [m] rounds a box's edges and
   /// corners to that radius, its faces unchanged (the distance to the box shrunk by `rounding`,

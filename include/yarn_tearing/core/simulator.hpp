@@ -64,6 +64,8 @@ class Simulator {
 
   /// Replaces the obstacles the yarns touch (kept through reset()). Throws
   /// std::invalid_argument naming the obstacle and field when one is invalid (the old ones stay).
+  /// When the new ones are the same solids at the same poses (Obstacle::sameGeometry, in the same
+  /// order; only friction or names changed), the contacts keep their friction states.
   void setObstacles(const std::vector<Obstacle>& obstacles);
   /// Moves obstacle `index` to `pose` for the next step (a robot link, a finger); points that
   /// stick to it are carried along. Throws std::out_of_range / std::invalid_argument (non-finite
