@@ -125,9 +125,7 @@ void EdgeGramSolver::solveGeneral(const EdgeSet& edges, const GramSystem& system
       }
     }
   }
-  matrix_.resize(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(q));
-  matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
-  factorization_.factorize(matrix_);
+  factorization_.factorize(triplets_, static_cast<Eigen::Index>(q));
   Eigen::Map<Eigen::VectorXd> b(rhs.data(), static_cast<Eigen::Index>(q));
   const Eigen::VectorXd x = factorization_.solve(b);
   b = x;

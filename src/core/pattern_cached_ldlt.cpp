@@ -1,30 +1,109 @@
 #include "yarn_tearing/core/pattern_cached_ldlt.hpp"
 
+#include <Eigen/OrderingMethods>
 #include <algorithm>
 
 namespace yarn_tearing {
 
-bool PatternCachedLdlt::factorize(const Eigen::SparseMatrix<double>& matrix) {
-  const auto outer_size = static_cast<std::size_t>(matrix.outerSize()) + 1;
-  const auto nonzeros = static_cast<std::size_t>(matrix.nonZeros());
-  const int* outer = matrix.outerIndexPtr();
-  const int* inner = matrix.innerIndexPtr();
-  const bool same = outer_.size() == outer_size && inner_.size() == nonzeros &&
-                    std::equal(outer_.begin(), outer_.end(), outer) &&
-                    std::equal(inner_.begin(), inner_.end(), inner);
-  if (!same) {
-    ldlt_.analyzePattern(matrix);
-    ++analyses_;
-    if (ldlt_.info() != Eigen::Success) {
-      outer_.clear();
-      inner_.clear();
-      return false;
-    }
-    outer_.assign(outer, outer + outer_size);
-    inner_.assign(inner, inner + nonzeros);
+bool PatternCachedLdlt::samePattern(const std::vector<Eigen::Triplet<double>>& entries,
+                                    Eigen::Index size) const {
+  if (new_index_.size() != size || entry_row_.size() != entries.size()) return false;
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    if (entries[k].row() != entry_row_[k] || entries[k].col() != entry_col_[k]) return false;
   }
-  ldlt_.factorize(matrix);
-  return ldlt_.info() == Eigen::Success;
+  return true;
+}
+
+bool PatternCachedLdlt::placeEntries(const std::vector<Eigen::Triplet<double>>& entries) {
+  const int* outer = upper_.outerIndexPtr();
+  const int* inner = upper_.innerIndexPtr();
+  slot_.assign(entries.size(), -1);
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const Eigen::Triplet<double>& t = entries[k];
+    if (t.row() < t.col()) continue;  // the upper triangle is not read
+    const int i = new_index_[t.row()];
+    const int j = new_index_[t.col()];
+    const int row = std::min(i, j);
+    const int col = std::max(i, j);
+    // Row indices within a column are sorted (setFromTriplets).
+    const int* end = inner + outer[col + 1];
+    const int* found = std::lower_bound(inner + outer[col], end, row);
+    if (found == end || *found != row) return false;
+    slot_[k] = static_cast<int>(found - inner);
+  }
+  entry_row_.resize(entries.size());
+  entry_col_.resize(entries.size());
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    entry_row_[k] = entries[k].row();
+    entry_col_[k] = entries[k].col();
+  }
+  return true;
+}
+
+bool PatternCachedLdlt::analyze(const std::vector<Eigen::Triplet<double>>& entries,
+                                Eigen::Index size) {
+  ++analyses_;
+  entry_row_.clear();
+  entry_col_.clear();
+  ordered_ = new_index_.size() != size || reorder_next_;
+  if (ordered_) {
+    // The ordering Eigen's SimplicialLDLT would choose: AMD on the symmetric matrix of the lower
+    // triangle.
+    Eigen::SparseMatrix<double> full(size, size);
+    full.setFromTriplets(entries.begin(), entries.end());
+    const Eigen::SparseMatrix<double> symmetric = full.selfadjointView<Eigen::Lower>();
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
+    Eigen::AMDOrdering<int>()(symmetric, inverse);
+    const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation =
+        inverse.inverse();
+    new_index_ = permutation.indices();
+    reorder_next_ = false;
+  }
+  // The permuted upper triangle's pattern.
+  std::vector<Eigen::Triplet<double>> pattern;
+  pattern.reserve(entries.size());
+  for (const Eigen::Triplet<double>& t : entries) {
+    if (t.row() < t.col()) continue;
+    const int i = new_index_[t.row()];
+    const int j = new_index_[t.col()];
+    pattern.emplace_back(std::min(i, j), std::max(i, j), 0.0);
+  }
+  upper_.resize(size, size);
+  upper_.setFromTriplets(pattern.begin(), pattern.end());
+  upper_.makeCompressed();
+  ldlt_.analyzePattern(upper_);
+  return ldlt_.info() == Eigen::Success && placeEntries(entries);
+}
+
+void PatternCachedLdlt::watchFill(bool analysed) {
+  if (!analysed) return;
+  const double fill = static_cast<double>(ldlt_.matrixL().nestedExpression().nonZeros()) /
+                      static_cast<double>(upper_.nonZeros());
+  if (ordered_) {
+    ordered_fill_ = fill;
+  } else if (fill > kMostFillGrowth * ordered_fill_) {
+    reorder_next_ = true;
+  }
+}
+
+bool PatternCachedLdlt::factorize(const std::vector<Eigen::Triplet<double>>& entries,
+                                  Eigen::Index size) {
+  const bool placed = samePattern(entries, size);
+  const bool analysed = !placed;
+  if (!placed && !analyze(entries, size)) {
+    entry_row_.clear();
+    entry_col_.clear();
+    return false;
+  }
+  double* values = upper_.valuePtr();
+  std::fill(values, values + upper_.nonZeros(), 0.0);
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    if (slot_[k] >= 0) values[slot_[k]] += entries[k].value();
+  }
+  ldlt_.factorize(upper_);
+  if (ldlt_.info() != Eigen::Success) return false;
+  watchFill(analysed);
+  return true;
 }
 
 }  // namespace yarn_tearing

@@ -73,27 +73,33 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     rhs_.segment<3>(r) = -mass * (position[v] - predicted[v]);
   }
   for (std::size_t e = 0; e < edges.size(); ++e) {
-    if (idle_row_[e] >= 0) {
-      addIdleRow(e, edges);
-      continue;
-    }
-    if (edge_row_[e] < 0) continue;
+    const bool idle = idle_row_[e] >= 0;
+    if (!idle && edge_row_[e] < 0) continue;
     const int ra = vertex_row_[edges.vertex_a[e]];
     const int rb = vertex_row_[edges.vertex_b[e]];
-    const Eigen::Vector3d d = position[edges.vertex_b[e]] - position[edges.vertex_a[e]];
-    const double length = d.norm();
-    if (!(length > 0.0)) return false;
-    const Eigen::Vector3d dir = d / length;
-    // Geometric stiffness m_e Hess C_e = m_e (I - n n^T) / l on the (a, b) blocks.
-    const Eigen::Matrix3d g =
-        (multiplier[e] / length) * (Eigen::Matrix3d::Identity() - dir * dir.transpose());
+    Eigen::Vector3d dir = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d g = Eigen::Matrix3d::Zero();
+    int re = idle_row_[e];
+    double diagonal = -1.0;  // an idle row: -1 m_e = 0, its couplings stored as zeros
+    if (!idle) {
+      const Eigen::Vector3d d = position[edges.vertex_b[e]] - position[edges.vertex_a[e]];
+      const double length = d.norm();
+      if (!(length > 0.0)) return false;
+      dir = d / length;
+      // Geometric stiffness m_e Hess C_e = m_e (I - n n^T) / l on the (a, b) blocks.
+      g = (multiplier[e] / length) * (Eigen::Matrix3d::Identity() - dir * dir.transpose());
+      re = edge_row_[e];
+      diagonal = -stretch_state.shift()[e];
+      rhs_[re] = -(length - stretch_state.baseLength()[e]);
+    }
+    // A taut and an idle row list the same entries in the same order, so that the pattern
+    // (PatternCachedLdlt) holds while the taut set changes.
     if (ra >= 0) addBlock(triplets_, ra, ra, g);
     if (rb >= 0) addBlock(triplets_, rb, rb, g);
     if (ra >= 0 && rb >= 0) {
       addBlock(triplets_, ra, rb, -g);
       addBlock(triplets_, rb, ra, -g);
     }
-    const int re = edge_row_[e];
     for (int i = 0; i < 3; ++i) {
       if (ra >= 0) {
         triplets_.emplace_back(re, ra + i, -dir[i]);
@@ -104,13 +110,14 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
         triplets_.emplace_back(rb + i, re, dir[i]);
       }
     }
-    triplets_.emplace_back(re, re, -stretch_state.shift()[e]);
-    rhs_[re] = -(length - stretch_state.baseLength()[e]);
+    triplets_.emplace_back(re, re, diagonal);
   }
   unsymmetric_ = false;
   if (contacts != nullptr) addContactRows(*contacts, inverse_mass, position);
-  matrix_.resize(rows, rows);
-  matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
+  if (unsymmetric_ || banded_) {
+    matrix_.resize(rows, rows);
+    matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
+  }
   if (unsymmetric_) {
     // Sliding friction couples its normal multiplier into the vertex rows only.
     sliding_factorization_.lu.compute(matrix_);
@@ -125,7 +132,7 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
   if (banded_) {
     banded_factorization_.ldlt.compute(matrix_);
     if (banded_factorization_.ldlt.info() != Eigen::Success) return false;
-  } else if (!general_factorization_.factorize(matrix_)) {
+  } else if (!general_factorization_.factorize(triplets_, rows)) {
     return false;
   }
   if (!solveAssembled(rhs_, solution_)) return false;
@@ -206,25 +213,6 @@ void StiffNewtonStep::exactResidual(const EdgeSet& edges,
     }
     residual_[re] -= dir.dot(relative) - stretch_state.shift()[e] * force;
   }
-}
-
-void StiffNewtonStep::addIdleRow(std::size_t e, const EdgeSet& edges) {
-  const int ra = vertex_row_[edges.vertex_a[e]];
-  const int rb = vertex_row_[edges.vertex_b[e]];
-  const int re = idle_row_[e];
-  // The entries a taut edge would fill, as zeros; -1 m_e = 0 on the diagonal.
-  if (ra >= 0 && rb >= 0) {
-    addBlock(triplets_, ra, rb, Eigen::Matrix3d::Zero());
-    addBlock(triplets_, rb, ra, Eigen::Matrix3d::Zero());
-  }
-  for (const int r : {ra, rb}) {
-    if (r < 0) continue;
-    for (int i = 0; i < 3; ++i) {
-      triplets_.emplace_back(re, r + i, 0.0);
-      triplets_.emplace_back(r + i, re, 0.0);
-    }
-  }
-  triplets_.emplace_back(re, re, -1.0);
 }
 
 double StiffNewtonStep::linearizedStretch(const EdgeSet& edges,

@@ -67,7 +67,6 @@ class EdgeGramSolver {
   std::vector<double> pivot_;           ///< banded: Thomas elimination pivots
   std::vector<double> gram_diagonal_;   ///< G_ee of the included edges (anchor term) [1/kg]
   std::vector<Eigen::Triplet<double>> triplets_;
-  Eigen::SparseMatrix<double> matrix_;
   /// The general path's factorization, its symbolic analysis kept while the pattern holds.
   PatternCachedLdlt factorization_;
 };

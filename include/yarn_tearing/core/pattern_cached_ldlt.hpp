@@ -7,37 +7,74 @@
 
 namespace yarn_tearing {
 
-/// A sparse LDL^T (Eigen SimplicialLDLT, AMD ordering) that redoes the symbolic analysis
-/// (fill-reducing ordering, elimination tree, column counts) only when the matrix's sparsity
-/// pattern differs from the one it last analysed; otherwise only the numeric factorization runs.
-/// The projection's successive solves within a step, and from step to step while the set of taut
-/// edges holds, share one pattern, and the analysis cost more than the factorization on woven
-/// grids. Copies start without an analysis (Eigen's solvers cannot be copied).
+/// A sparse LDL^T of a symmetric matrix given as a list of entries (both triangles listed, the
+/// lower one read; duplicates summed), with an AMD fill-reducing ordering (Eigen's SimplicialLDLT
+/// underneath). The symbolic part (the permuted upper triangle's pattern, where each entry lands
+/// in it, the elimination tree and column counts) is kept while the entries fall within the
+/// analysed pattern: their values are then scattered straight into the permuted matrix and only
+/// the numeric factorization runs (no triplet sort, no compression, no permuted copy per
+/// factorization). An entry outside it brings a new analysis, which keeps the last ordering
+/// (a set of taut edges that changes a little from step to step, as a hanging fabric's slack
+/// weft does, hardly changes the fill) until the factor's fill per matrix entry has grown by
+/// kMostFillGrowth since the last AMD ordering; a new size always reorders.
+/// Copies start without an analysis (Eigen's solvers cannot be copied).
 class PatternCachedLdlt {
  public:
   PatternCachedLdlt() = default;
   PatternCachedLdlt(const PatternCachedLdlt&) {}
   PatternCachedLdlt& operator=(const PatternCachedLdlt&) {
-    outer_.clear();
-    inner_.clear();
+    entry_row_.clear();
+    entry_col_.clear();
+    new_index_.resize(0);
+    upper_.resize(0, 0);
     return *this;
   }
 
-  /// Factorizes `matrix` (compressed, lower triangle read); false when the factorization fails.
-  bool factorize(const Eigen::SparseMatrix<double>& matrix);
+  /// Factorizes the size x size matrix of `entries`; false when the factorization fails.
+  bool factorize(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size);
   /// Solves with the last factorization.
   template <typename Rhs>
   Eigen::VectorXd solve(const Rhs& rhs) const {
-    return ldlt_.solve(rhs);
+    const Eigen::Index size = new_index_.size();
+    permuted_.resize(size);
+    for (Eigen::Index i = 0; i < size; ++i) permuted_[new_index_[i]] = rhs[i];
+    permuted_ = ldlt_.solve(permuted_);
+    Eigen::VectorXd result(size);
+    for (Eigen::Index i = 0; i < size; ++i) result[i] = permuted_[new_index_[i]];
+    return result;
   }
   /// Symbolic analyses so far [-] (for tests and benchmarks).
   long analyses() const { return analyses_; }
 
  private:
-  std::vector<int> outer_;  ///< outer index array of the analysed pattern
-  std::vector<int> inner_;  ///< inner index array of the analysed pattern
+  /// Orders, builds the permuted upper triangle's pattern and each entry's slot in it.
+  bool analyze(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size);
+  /// Finds each entry's slot in the analysed pattern and keeps the sequence; false when one is
+  /// not in it.
+  bool placeEntries(const std::vector<Eigen::Triplet<double>>& entries);
+  /// Whether `entries` has the (row, column) sequence last placed.
+  bool samePattern(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size) const;
+
+  /// After factorizing a new analysis: its fill per matrix entry, or whether it has grown past
+  /// kMostFillGrowth of the last ordering's (then the next analysis orders anew).
+  void watchFill(bool analysed);
+
+  /// Growth of the factor's fill per matrix entry, since the last ordering, that brings a new
+  /// one [-].
+  static constexpr double kMostFillGrowth = 1.1;
+  bool ordered_ = false;        ///< the last analysis computed its ordering
+  bool reorder_next_ = true;    ///< the next analysis computes a new ordering
+  double ordered_fill_ = 0.0;   ///< factor nonzeros per matrix nonzero at the last ordering [-]
+  std::vector<int> entry_row_;  ///< row of each entry last placed
+  std::vector<int> entry_col_;  ///< column of each entry last placed
+  /// Per entry: its index in upper_'s values, -1 for an entry of the upper triangle (not read).
+  std::vector<int> slot_;
+  Eigen::VectorXi new_index_;  ///< row i of the matrix is row new_index_[i] of the permuted one
+  Eigen::SparseMatrix<double> upper_;  ///< upper triangle of P A P^T
+  mutable Eigen::VectorXd permuted_;   ///< a right-hand side in the permuted order
   long analyses_ = 0;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper, Eigen::NaturalOrdering<int>>
+      ldlt_;
 };
 
 }  // namespace yarn_tearing

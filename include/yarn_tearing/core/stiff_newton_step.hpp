@@ -85,8 +85,6 @@ class StiffNewtonStep {
   void exactResidual(const EdgeSet& edges, const std::vector<Eigen::Vector3d>& position,
                      const std::vector<double>& inverse_mass, const std::vector<double>& multiplier,
                      const EdgeStretchState& stretch_state);
-  /// Adds slack edge e's idle row (idle_row_): m_e = 0, its couplings stored as zeros.
-  void addIdleRow(std::size_t e, const EdgeSet& edges);
   /// Solves the assembled symmetric system for `rhs`, into `result`.
   bool solveAssembled(const Eigen::VectorXd& rhs, Eigen::VectorXd& result);
   /// One pass of iterative refinement of solution_ on the assembled matrix_, `solve(rhs,
