@@ -54,7 +54,8 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
       diagnostics_(nh, private_nh),
       refusal_warnings_(kWarnPeriod, static_cast<std::size_t>(WarningSource::kCount) * kNumReasons),
       wrenches_(private_nh, tf_buffer_, config.node.frame_id),
-      obstacle_wrenches_(private_nh) {
+      obstacle_wrenches_(private_nh),
+      break_log_(std::max<std::size_t>(kBreakQueue, simulator_.scene().edges.size())) {
   states_pub_ = nh_.advertise<YarnStateArray>("yarn_states", kStateQueue);
   if (!simulator_.scene().fabrics.empty()) {
     fabric_states_pub_ = nh_.advertise<FabricStateArray>("fabric_states", kStateQueue);
@@ -70,6 +71,8 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
   grasp_sub_ = nh_.subscribe("grasp", kInputQueue, &YarnTearingNode::onGrasp, this);
   reset_srv_ = private_nh_.advertiseService("reset", &YarnTearingNode::onReset, this);
   pause_srv_ = private_nh_.advertiseService("set_paused", &YarnTearingNode::onSetPaused, this);
+  break_log_srv_ =
+      private_nh_.advertiseService("get_break_events", &YarnTearingNode::onGetBreakEvents, this);
 
   reconfigure_ = std::make_unique<dynamic_reconfigure::Server<YarnTearingConfig>>(
       reconfigure_mutex_, private_nh_);
@@ -183,8 +186,9 @@ void YarnTearingNode::reportRestoredYarns() {
 
 void YarnTearingNode::publishBreakEvents() {
   for (const TearEvent& event : simulator_.takeTearEvents()) {
-    const BreakEvent msg =
+    BreakEvent msg =
         toBreakEventMsg(event, simulator_.scene(), config_.node.frame_id, stampOf(event.time));
+    break_log_.record(msg);
     breaks_pub_.publish(msg);
     markers_.addBreak(event.yarn, event.position);
     if (!msg.fabric.empty()) {
@@ -361,6 +365,7 @@ bool YarnTearingNode::onReset(std_srvs::Empty::Request& /*request*/,
   simulator_.reset();
   inputs_.clear();
   markers_.clearBreaks();
+  break_log_.clear();
   restartPacing();
   // A reset never publishes at once: however many resets come, states keep publish_rate (in wall
   // time the schedule simply goes on; in simulated time it starts one period after time 0).
@@ -369,6 +374,14 @@ bool YarnTearingNode::onReset(std_srvs::Empty::Request& /*request*/,
   }
   diagnostics_.restartWindow();
   ROS_INFO("yarn_tearing_node: reset");
+  return true;
+}
+
+bool YarnTearingNode::onGetBreakEvents(GetBreakEvents::Request& request,
+                                       GetBreakEvents::Response& response) {
+  response.events = break_log_.since(request.first);
+  response.first = std::max(request.first, break_log_.oldest());
+  response.total = break_log_.total();
   return true;
 }
 

@@ -2,7 +2,8 @@
 """Through topics only: force_ramp pulls a pinned yarn until it tears; the break event's tension
 matches the closed-form breaking tension sigma_b * pi * r^2 from this test's own config (2 %), and
 force_ramp then ends; /diagnostics counts the step after the tear as taken in substeps (the
-recoil, README departure 7)."""
+recoil, README departure 7); ~get_break_events returns the published event, numbered 0, and
+~reset clears its log."""
 import math
 import unittest
 
@@ -10,10 +11,13 @@ import rosnode
 import rospy
 import rostest
 from diagnostic_msgs.msg import DiagnosticArray
+from std_srvs.srv import Empty
+from yarn_tearing.srv import GetBreakEvents
 
 import yarn_rostest_support as support
 
 TOLERANCE = 0.02
+NODE = "/yarn_tearing"
 
 
 class TearingTest(unittest.TestCase):
@@ -59,6 +63,19 @@ class TearingTest(unittest.TestCase):
 
         self.assertTrue(support.wait_until(lambda: substepped_steps() >= 1, timeout=5.0),
                         "/diagnostics never counted the tear's recoil step as substepped")
+
+        # A consumer that lost events fetches them: the log holds exactly what was published.
+        get_break_events = rospy.ServiceProxy(NODE + "/get_break_events", GetBreakEvents)
+        get_break_events.wait_for_service(timeout=10.0)
+        self.assertEqual(event.index, 0)
+        logged = get_break_events(first=0)
+        self.assertEqual((logged.first, logged.total), (0, 1))
+        self.assertEqual(logged.events, [event])
+        newer = get_break_events(first=1)
+        self.assertEqual((newer.events, newer.first, newer.total), ([], 1, 1))
+        rospy.ServiceProxy(NODE + "/reset", Empty)()
+        cleared = get_break_events(first=0)
+        self.assertEqual((cleared.events, cleared.total), ([], 0), "~reset keeps old events")
 
 
 if __name__ == "__main__":

@@ -13,9 +13,11 @@
 #include <memory>
 
 #include "yarn_tearing/AppliedForce.h"
+#include "yarn_tearing/GetBreakEvents.h"
 #include "yarn_tearing/Grasp.h"
 #include "yarn_tearing/YarnTearingConfig.h"
 #include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/ros/break_event_log.hpp"
 #include "yarn_tearing/ros/frame_transformer.hpp"
 #include "yarn_tearing/ros/input_handler.hpp"
 #include "yarn_tearing/ros/marker_builder.hpp"
@@ -67,6 +69,8 @@ class YarnTearingNode {
   /// After a step that restored yarns: forgets their inputs, logs one error (throttled).
   void reportRestoredYarns();
   bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
+  /// ~get_break_events: the logged break events from request.first on.
+  bool onGetBreakEvents(GetBreakEvents::Request& request, GetBreakEvents::Response& response);
   bool onSetPaused(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
   /// dynamic_reconfigure: applies real_time_factor, publish_rate, air_damping, regularization,
   /// breaking_enabled and paused between steps.
@@ -115,6 +119,7 @@ class YarnTearingNode {
   WarningThrottle refusal_warnings_;
   SupportWrenchPublisher wrenches_;
   WrenchTopics obstacle_wrenches_;  ///< ~obstacles/<name>/wrench
+  BreakEventLog break_log_;         ///< what break_events published since start or ~reset
   ros::Publisher states_pub_;
   ros::Publisher fabric_states_pub_;  ///< only when the scene has fabrics
   ros::Publisher breaks_pub_;
@@ -125,6 +130,7 @@ class YarnTearingNode {
   ros::Subscriber grasp_sub_;
   ros::ServiceServer reset_srv_;
   ros::ServiceServer pause_srv_;
+  ros::ServiceServer break_log_srv_;  ///< ~get_break_events
   bool paused_ = false;
   std::atomic<bool> stop_requested_{false};
   boost::recursive_mutex reconfigure_mutex_;
