@@ -14,6 +14,10 @@
 namespace yarn_tearing {
 namespace {
 
+/// After a tear's pieces have unloaded, each substep of the rest of the step is this many times
+/// the last [-] (doubling: about log2(recoil_substeps) substeps to the step's end).
+constexpr double kRecoilGrowth = 2.0;
+
 void requireVertex(const Scene& scene, std::uint32_t vertex) {
   if (vertex >= scene.vertices.size()) {
     throw std::out_of_range("vertex " + std::to_string(vertex) + " out of range [0, " +
@@ -99,9 +103,9 @@ void Simulator::resetWorkspace() {
 void Simulator::step() {
   const bool can_substep = parameters_.recoil_substeps > 1;
   if (recoil_pending_ && can_substep) {
-    advanceInSubsteps();
+    advanceInSubsteps(true);
   } else if (!advance(can_substep)) {
-    advanceInSubsteps();  // the whole step did not converge: taken again in substeps
+    advanceInSubsteps(false);  // the whole step did not converge: taken again in substeps
   }
   ++step_count_;
 }
@@ -153,24 +157,39 @@ void Simulator::restoreNonFiniteYarns(std::size_t first_event_of_step) {
   resetWorkspace();
 }
 
-void Simulator::advanceInSubsteps() {
+void Simulator::advanceInSubsteps(bool recoil) {
   VertexSet& vertices = scene_.vertices;
   step_target_ = vertices.kinematic_target;
   step_start_ = vertices.position;
   const double time_step = parameters_.time_step;
   const double start_time = time_;
-  const int substeps = parameters_.recoil_substeps;
-  parameters_.time_step = time_step / substeps;
-  StepHealth whole;  // of the whole step: the worst of its substeps
+  const double fine = time_step / parameters_.recoil_substeps;
+  const double slack = 1.0e-6 * fine;  // round-off in the substeps' sum [s]
+  StepHealth whole;                    // of the whole step: the worst of its substeps
   whole.projection_iterations = 0;
   bool tore = false;
-  for (int i = 1; i <= substeps; ++i) {
-    const double fraction = static_cast<double>(i) / substeps;
-    for (std::size_t v = 0; v < vertices.size(); ++v) {
-      if (vertices.motion[v] != VertexMotion::kKinematic) continue;
-      vertices.kinematic_target[v] = step_start_[v] + fraction * (step_target_[v] - step_start_[v]);
+  bool coarse_failed = false;
+  double elapsed = 0.0;
+  double last = 0.0;  // the last substep's length [s]
+  int count = 0;
+  while (elapsed < time_step - slack) {
+    const double remaining = time_step - elapsed;
+    // Once every torn piece has unloaded (the elastic wave has crossed it), substeps growing
+    // geometrically to the step's end; if one does not converge, on in fine substeps (undone).
+    const bool unloaded = time_ >= work_.tearing.unloadingEnd() - slack;
+    const bool coarse = recoil && unloaded && !coarse_failed;
+    double h = coarse ? std::max(fine, kRecoilGrowth * last) : fine;
+    if (remaining < h + 0.5 * h) h = remaining;
+    setSubstepTargets((elapsed + h) / time_step);
+    parameters_.time_step = h;
+    if (!advance(coarse && h > fine + slack)) {
+      coarse_failed = true;
+      continue;
     }
-    advance(false);
+    last = h;
+    elapsed += h;
+    time_ = start_time + elapsed;
+    ++count;
     accumulateHealth(health_, whole);
     tore = tore || recoil_pending_;
   }
@@ -180,9 +199,17 @@ void Simulator::advanceInSubsteps() {
   std::sort(whole.restored_yarns.begin(), whole.restored_yarns.end());
   whole.restored_yarns.erase(std::unique(whole.restored_yarns.begin(), whole.restored_yarns.end()),
                              whole.restored_yarns.end());
-  whole.substeps = substeps;
+  whole.substeps = count;
   health_ = whole;
   recoil_pending_ = tore;
+}
+
+void Simulator::setSubstepTargets(double fraction) {
+  VertexSet& vertices = scene_.vertices;
+  for (std::size_t v = 0; v < vertices.size(); ++v) {
+    if (vertices.motion[v] != VertexMotion::kKinematic) continue;
+    vertices.kinematic_target[v] = step_start_[v] + fraction * (step_target_[v] - step_start_[v]);
+  }
 }
 
 void Simulator::accumulateForces() {

@@ -84,6 +84,7 @@ void Tearing::startUnloading(const Scene& scene, double time) {
     const double speed = std::sqrt(material.curve.youngsModulus() / material.density);
     const std::uint32_t root = pieces_.root(edges.vertex_a[e]);
     unloading_until_[root] = time + (box_max_[root] - box_min_[root]).norm() / speed;
+    unloading_end_ = std::max(unloading_end_, unloading_until_[root]);
   }
   unloaded_at_.resize(n, -1.0);
   for (std::size_t v = 0; v < n; ++v) {

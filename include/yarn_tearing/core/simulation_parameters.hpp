@@ -60,8 +60,11 @@ struct SimulationParameters {
   /// StepHealth either way).
   TensionRowWeighting tension_rows = TensionRowWeighting::kForceBalance;
   bool breaking_enabled = true;  ///< false: yarns never tear (yield still acts)
-  /// Substeps of the step after a tear [-] (1 = none): the released elastic energy runs through
-  /// the pieces as a wave at sqrt(E / rho) (~2 km/s), far faster than a step resolves.
+  /// Substeps per step while a tear's pieces unload [-] (1 = none): the released elastic energy
+  /// runs through the pieces as a wave at sqrt(E / rho) (~2 km/s), far faster than a step
+  /// resolves, so the step after a tear is taken in substeps of dt / recoil_substeps until the
+  /// wave has crossed the torn pieces, the rest of it in one; a step whose projection does not
+  /// converge is taken again in recoil_substeps equal substeps.
   int recoil_substeps = 96;
   /// Use the general sparse solver even for chains (the banded O(N) path is otherwise chosen).
   bool force_general_solver = false;

@@ -40,9 +40,10 @@ class Simulator {
   /// and grasps cleared), drops that yarn's events of this step, and lists it in
   /// lastHealth().restored_yarns; the other yarns go on.
   void step();
-  /// True when the next step() resolves the recoil of a tear in recoil_substeps substeps. A step
-  /// whose projection does not converge is also taken again in recoil_substeps substeps (a
-  /// sudden load far beyond what one step can take back; lastHealth().substeps says so).
+  /// True when the next step() resolves the recoil of a tear in substeps of Δt / recoil_substeps
+  /// while the torn pieces unload (the rest of that step in one). A step whose projection does
+  /// not converge is taken again in recoil_substeps equal substeps (a sudden load far beyond
+  /// what one step can take back; lastHealth().substeps says so).
   bool recoilPending() const { return recoil_pending_; }
 
   /// Replaces the parameters between steps (live tuning: air damping, regularization, breaking
@@ -97,9 +98,14 @@ class Simulator {
   bool advance(bool undo_if_unconverged);
   /// Puts the vertices back where the step started and forgets the solvers' warm starts.
   void undoPrediction();
-  /// One step of `time_step` in parameters_.recoil_substeps equal substeps, kinematic vertices
-  /// moved linearly to their targets; lastHealth() is the worst of the substeps'.
-  void advanceInSubsteps();
+  /// One step of `time_step` in substeps of time_step / recoil_substeps, kinematic vertices moved
+  /// linearly to their targets; lastHealth() is the worst of the substeps'. With `recoil` (the
+  /// step after a tear) only while a torn piece is still unloading (Tearing::unloadingEnd());
+  /// the rest of the step is then one substep, or fine substeps again if that one does not
+  /// converge (README, departure 7).
+  void advanceInSubsteps(bool recoil);
+  /// Moves the kinematic vertices' targets to `fraction` [-] of the way from the step's start.
+  void setSubstepTargets(double fraction);
   void accumulateForces();
   void predictPositions();
   void projectLengthConstraints();

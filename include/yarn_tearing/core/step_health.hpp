@@ -21,9 +21,10 @@ struct StepHealth {
   /// Yarns (scene indices) this step left with a non-finite value, restored to their initial
   /// state (Simulator::step); empty in a healthy step.
   std::vector<std::uint32_t> restored_yarns;
-  /// Substeps the step was taken in [-]: 1, or recoil_substeps after a tear or when the whole
-  /// step's projection did not converge (the other fields are then the worst substep's, breaks
-  /// and restored_yarns their union).
+  /// Substeps the step was taken in [-]: 1; after a tear, the fine substeps of the unloading plus
+  /// one for the rest of the step; recoil_substeps when the whole step's projection did not
+  /// converge (the other fields are then the worst substep's, breaks and restored_yarns their
+  /// union).
   int substeps = 1;
 };
 

@@ -23,6 +23,9 @@ class Tearing {
   /// Tears the collected edges and appends one event each (time = `time` [s]; the state each
   /// reports follows tearEventOf(), `time_step` [s] the step's Δt).
   void apply(Scene& scene, double time, double time_step, std::vector<TearEvent>& events);
+  /// When the last of the pieces torn so far has unloaded (its tear's time plus the elastic
+  /// wave's crossing time, extent / c) [s]; -1 before any tear.
+  double unloadingEnd() const { return unloading_end_; }
 
  private:
   /// Whether edge e's piece is still unloading from an earlier tear at `time` [s].
@@ -31,6 +34,7 @@ class Tearing {
   /// wave from the tear has crossed the piece.
   void startUnloading(const Scene& scene, double time);
 
+  double unloading_end_ = -1.0;           ///< latest end of an unloading [s]
   std::vector<double> unloaded_at_;       ///< per vertex: end of its piece's unloading [s]
   std::vector<double> unloading_until_;   ///< per piece root, scratch [s]
   std::vector<Eigen::Vector3d> box_min_;  ///< per piece root: lower corner of its box [m], scratch
