@@ -47,11 +47,8 @@ double pullStripUntilTorn(Simulator& sim, double speed, std::vector<TearEvent>& 
   const Scene& scene = sim.scene();
   const Fabric& fabric = scene.fabrics[0];
   const Eigen::Vector3d warp(0.0, 0.0, -1.0);
-  std::vector<std::uint32_t> grip;
-  for (std::uint32_t c = 0; c < fabric.ends; ++c)
-    grip.push_back(fabric.vertex(fabric.picks - 1, c));
-  std::vector<Eigen::Vector3d> start;
-  for (std::uint32_t v : grip) start.push_back(scene.vertices.position[v]);
+  const std::vector<std::uint32_t> grip = lastRow(scene);
+  const std::vector<Eigen::Vector3d> start = positionsOf(scene, grip);
   double peak = 0.0;
   const double dt = sim.parameters().time_step;
   for (int i = 1; i < 200000 && events.size() < fabric.ends; ++i) {

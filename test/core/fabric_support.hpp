@@ -20,6 +20,22 @@ inline FabricSpec cottonPatch(int ends, int picks, double weft_length, double wa
   return spec;
 }
 
+/// Global vertex ids of the scene's first fabric's last row (a strip's grips).
+inline std::vector<std::uint32_t> lastRow(const Scene& scene) {
+  const Fabric& fabric = scene.fabrics[0];
+  std::vector<std::uint32_t> row;
+  for (std::uint32_t c = 0; c < fabric.ends; ++c) row.push_back(fabric.vertex(fabric.picks - 1, c));
+  return row;
+}
+
+/// Positions of the given vertices [m].
+inline std::vector<Eigen::Vector3d> positionsOf(const Scene& scene,
+                                                const std::vector<std::uint32_t>& vertices) {
+  std::vector<Eigen::Vector3d> positions;
+  for (std::uint32_t v : vertices) positions.push_back(scene.vertices.position[v]);
+  return positions;
+}
+
 /// The breaking force sigma_b pi r^2 of a fabric family's yarn [N].
 inline double breakingForce(const YarnSpec& yarn) {
   return yarn.material.curve.breakingStress() * yarn.area();
