@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 
 #include "test_support.hpp"
@@ -17,6 +18,7 @@ struct Recoil {
   double stored = 0.0;     ///< elastic energy at the tear, 1/2 T^2 L0 / (E A) [J]
   double peak = 0.0;       ///< largest kinetic energy at the ends of the 3 steps after it [J]
   double reference = 0.0;  ///< the stiff reference's peak over the same 3 steps [J]
+  int substeps = 0;        ///< substeps of the step after the tear [-]
 };
 
 /// Vertex 0 pinned, the last vertex drawn along +x until the yarn tears at time step `dt` [s].
@@ -48,6 +50,7 @@ Recoil drawUntilTearAndRecoil(int vertices, double dt, int recoil_substeps) {
   for (int i = 0; i < 3; ++i) {
     sim.setKinematicTarget(grasped, start + Eigen::Vector3d(speed * (sim.time() + dt), 0.0, 0.0));
     sim.step();
+    if (i == 0) result.substeps = sim.lastHealth().substeps;
     result.peak = std::max(result.peak, kineticEnergy(sim));
   }
 
@@ -79,6 +82,22 @@ TEST(Recoil, ATearReleasesAtLeastHalfItsElasticEnergyAtOneMillisecond) {
     EXPECT_GE(r.peak, 0.5 * r.stored) << n << " vertices";
     EXPECT_LE(r.peak, 1.01 * r.reference) << n << " vertices";
   }
+}
+
+// The step after the tear takes substeps of dt / recoil_substeps only while the pieces unload
+// (the elastic wave crosses a piece no longer than the stretched yarn, L (1 + eps_b) / c), then
+// at most 4 substeps growing to the step's end (README, departure 7).
+TEST(Recoil, FineSubstepsOnlyWhileThePiecesUnload) {
+  const double dt = 1.0e-3;
+  const int fine = SimulationParameters{}.recoil_substeps;
+  const Recoil r = drawUntilTearAndRecoil(25, dt, fine);
+  const Material material = cottonLike();
+  const double wave_speed = std::sqrt(material.curve.youngsModulus() / material.density);
+  const double unloading = hangingYarn().length * (1.0 + 0.071) / wave_speed;  // [s]
+  const int unloading_substeps = static_cast<int>(std::ceil(unloading / (dt / fine)));
+  EXPECT_GT(r.substeps, 1);
+  EXPECT_LE(r.substeps, unloading_substeps + 4);
+  EXPECT_LT(r.substeps, fine / 4);
 }
 
 TEST(Recoil, WithoutSubstepsOneStepLosesIt) {
