@@ -367,12 +367,17 @@ ProjectionResult LengthConstraintProjection::projectFast(
   newton_.beginProjection(parameters.time_step);
   for (;;) {
     // With contacts the iterations start at the step's start, which is not the answer.
-    result.converged = result.max_violation <= parameters.constraint_tolerance &&
-                       result.max_penetration <= parameters.constraint_tolerance &&
-                       (contacts == nullptr ||
-                        (result.iterations > 0 && newton_.impulseChange() <= kImpulseTolerance &&
-                         last_move_ <= parameters.constraint_tolerance)) &&
-                       (!newton_first || result.iterations > 0);
+    const bool within = result.max_violation <= parameters.constraint_tolerance &&
+                        result.max_penetration <= parameters.constraint_tolerance &&
+                        (contacts == nullptr ||
+                         (result.iterations > 0 && newton_.impulseChange() <= kImpulseTolerance &&
+                          last_move_ <= parameters.constraint_tolerance)) &&
+                        (!newton_first || result.iterations > 0);
+    // A Newton step that stopped pivoting early solved its linearization's complementarity
+    // problem only approximately: the projection ends on one that solved it exactly (the next
+    // pivots fully).
+    result.converged = within && !newton_.stoppedEarly();
+    if (within && newton_.stoppedEarly()) newton_.pivotFully();
     if (result.converged) {
       // Held to their limits, but do the constraint forces act along the final edge directions?
       // Where they act along the directions the iterations started from, a light vertex on a

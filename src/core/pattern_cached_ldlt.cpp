@@ -71,14 +71,81 @@ bool PatternCachedLdlt::analyze(const std::vector<Eigen::Triplet<double>>& entri
   upper_.resize(size, size);
   upper_.setFromTriplets(pattern.begin(), pattern.end());
   upper_.makeCompressed();
-  ldlt_.analyzePattern(upper_);
-  return ldlt_.info() == Eigen::Success && placeEntries(entries);
+  nonzero_slot_.clear();
+  if (!leave_out_zeros_) {
+    ldlt_.analyzePattern(upper_);
+    if (ldlt_.info() != Eigen::Success) return false;
+  }
+  return placeEntries(entries);
+}
+
+bool PatternCachedLdlt::nonzerosFitAnalysed() const {
+  if (nonzero_slot_.size() != static_cast<std::size_t>(upper_.nonZeros()) ||
+      nonzero_.rows() != upper_.rows()) {
+    return false;
+  }
+  const double* values = upper_.valuePtr();
+  Eigen::Index zeros = 0;
+  for (std::size_t k = 0; k < nonzero_slot_.size(); ++k) {
+    if (nonzero_slot_[k] < 0) {
+      if (values[k] != 0.0) return false;
+    } else if (values[k] == 0.0) {
+      ++zeros;
+    }
+  }
+  return static_cast<double>(zeros) <= kMostZeroShare * static_cast<double>(nonzero_.nonZeros());
+}
+
+bool PatternCachedLdlt::analyzeNonzeros() {
+  ++zero_free_analyses_;
+  const Eigen::Index size = upper_.rows();
+  const int* outer = upper_.outerIndexPtr();
+  const int* inner = upper_.innerIndexPtr();
+  const double* values = upper_.valuePtr();
+  nonzero_slot_.assign(static_cast<std::size_t>(upper_.nonZeros()), -1);
+  int kept = 0;
+  for (Eigen::Index j = 0; j < size; ++j) {
+    for (int k = outer[j]; k < outer[j + 1]; ++k) {
+      if (values[k] != 0.0 || inner[k] == j) nonzero_slot_[k] = kept++;
+    }
+  }
+  // Columns of upper_ are sorted, so are the kept entries: the arrays are filled directly.
+  nonzero_.resize(size, size);
+  nonzero_.resizeNonZeros(kept);
+  int* nonzero_outer = nonzero_.outerIndexPtr();
+  int* nonzero_inner = nonzero_.innerIndexPtr();
+  nonzero_outer[0] = 0;
+  for (Eigen::Index j = 0; j < size; ++j) {
+    int next = nonzero_outer[j];
+    for (int k = outer[j]; k < outer[j + 1]; ++k) {
+      if (nonzero_slot_[k] >= 0) nonzero_inner[next++] = inner[k];
+    }
+    nonzero_outer[j + 1] = next;
+  }
+  ldlt_.analyzePattern(nonzero_);
+  return ldlt_.info() == Eigen::Success;
+}
+
+bool PatternCachedLdlt::factorizeValues() {
+  if (!leave_out_zeros_) {
+    ldlt_.factorize(upper_);
+    return ldlt_.info() == Eigen::Success;
+  }
+  if (!nonzerosFitAnalysed() && !analyzeNonzeros()) return false;
+  const double* values = upper_.valuePtr();
+  double* kept = nonzero_.valuePtr();
+  for (std::size_t k = 0; k < nonzero_slot_.size(); ++k) {
+    if (nonzero_slot_[k] >= 0) kept[nonzero_slot_[k]] = values[k];
+  }
+  ldlt_.factorize(nonzero_);
+  return ldlt_.info() == Eigen::Success;
 }
 
 void PatternCachedLdlt::watchFill(bool analysed) {
   if (!analysed) return;
-  const double fill = static_cast<double>(ldlt_.matrixL().nestedExpression().nonZeros()) /
-                      static_cast<double>(upper_.nonZeros());
+  const Eigen::SparseMatrix<double>& factorized = leave_out_zeros_ ? nonzero_ : upper_;
+  const double fill =
+      static_cast<double>(factorNonZeros()) / static_cast<double>(factorized.nonZeros());
   if (ordered_) {
     ordered_fill_ = fill;
   } else if (fill > kMostFillGrowth * ordered_fill_) {
@@ -100,8 +167,7 @@ bool PatternCachedLdlt::factorize(const std::vector<Eigen::Triplet<double>>& ent
   for (std::size_t k = 0; k < entries.size(); ++k) {
     if (slot_[k] >= 0) values[slot_[k]] += entries[k].value();
   }
-  ldlt_.factorize(upper_);
-  if (ldlt_.info() != Eigen::Success) return false;
+  if (!factorizeValues()) return false;
   watchFill(analysed);
   return true;
 }

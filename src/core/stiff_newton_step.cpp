@@ -132,8 +132,10 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
   if (banded_) {
     banded_factorization_.ldlt.compute(matrix_);
     if (banded_factorization_.ldlt.info() != Eigen::Success) return false;
-  } else if (!general_factorization_.factorize(triplets_, rows)) {
-    return false;
+  } else {
+    // The idle rows' stored zeros stay out of the elimination: they only keep the pattern.
+    general_factorization_.leaveOutZeros();
+    if (!general_factorization_.factorize(triplets_, rows)) return false;
   }
   if (!solveAssembled(rhs_, solution_)) return false;
   if (refine_ && !refine([this](const Eigen::VectorXd& rhs, Eigen::VectorXd& result) {
@@ -256,7 +258,11 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
   frontier_.reset(edges.size());
   // Block principal pivoting, as in the fast iterations: release the taut edges that would
   // push, take in the slack ones that the step would stretch (with the taut frontier), solve
-  // again.
+  // again. On a contact-free graph that is no chain, only kQuickPivotingPasses times in the
+  // first Newton steps (stoppedEarly()).
+  const bool quick =
+      !banded_ && contacts == nullptr && !full_pivoting_ && newton_steps_ <= kQuickNewtonSteps;
+  stopped_early_ = false;
   for (int pass = 0;; ++pass) {
     if (!solve(predicted, inverse_mass, edges, incidence, stretch_state, taut, position, multiplier,
                contacts)) {
@@ -291,6 +297,10 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
     }
     if (contacts != nullptr && pivotContacts(*contacts, inverse_mass, position)) changed = true;
     if (!changed) break;
+    if (quick && pass == kQuickPivotingPasses) {
+      stopped_early_ = true;
+      break;
+    }
     frontier_.grow(edges, incidence, movable, stretch_, taut);
   }
   if (contacts != nullptr) {

@@ -17,18 +17,33 @@ namespace yarn_tearing {
 /// (a set of taut edges that changes a little from step to step, as a hanging fabric's slack
 /// weft does, hardly changes the fill) until the factor's fill per matrix entry has grown by
 /// kMostFillGrowth since the last AMD ordering; a new size always reorders.
+///
+/// With leaveOutZeros(), entries whose value is exactly zero (and that are not on the diagonal)
+/// are left out of the factorization: the listed pattern still fixes the ordering and the
+/// slots, but the elimination runs on the pattern of the nonzero entries only, analysed with the
+/// same ordering (elimination tree and column counts, no new ordering) whenever a nonzero falls
+/// outside the last such analysis or the analysed pattern has grown past kMostZeroShare of
+/// unused entries. Leaving out exact zeros is the same matrix eliminated in the same order: the
+/// factor differs only in the order its round-off is summed. (A Newton system that keeps an idle
+/// row of stored zeros for every slack edge so that its pattern holds filled the factor of a
+/// 64 x 64 fabric to twice the nonzeros of the taut edges' own pattern.)
 /// Copies start without an analysis (Eigen's solvers cannot be copied).
 class PatternCachedLdlt {
  public:
   PatternCachedLdlt() = default;
-  PatternCachedLdlt(const PatternCachedLdlt&) {}
-  PatternCachedLdlt& operator=(const PatternCachedLdlt&) {
+  PatternCachedLdlt(const PatternCachedLdlt& other) : leave_out_zeros_(other.leave_out_zeros_) {}
+  PatternCachedLdlt& operator=(const PatternCachedLdlt& other) {
+    leave_out_zeros_ = other.leave_out_zeros_;
     entry_row_.clear();
     entry_col_.clear();
     new_index_.resize(0);
     upper_.resize(0, 0);
+    nonzero_.resize(0, 0);
     return *this;
   }
+
+  /// From now on, leaves entries that are exactly zero out of the factorization (see above).
+  void leaveOutZeros() { leave_out_zeros_ = true; }
 
   /// Factorizes the size x size matrix of `entries`; false when the factorization fails.
   bool factorize(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size);
@@ -45,6 +60,10 @@ class PatternCachedLdlt {
   }
   /// Symbolic analyses so far [-] (for tests and benchmarks).
   long analyses() const { return analyses_; }
+  /// Analyses of the nonzero entries' pattern so far (leaveOutZeros()) [-].
+  long zeroFreeAnalyses() const { return zero_free_analyses_; }
+  /// Nonzeros of the last factor's L [-] (for tests and benchmarks).
+  Eigen::Index factorNonZeros() const { return ldlt_.matrixL().nestedExpression().nonZeros(); }
 
  private:
   /// Orders, builds the permuted upper triangle's pattern and each entry's slot in it.
@@ -55,6 +74,14 @@ class PatternCachedLdlt {
   /// Whether `entries` has the (row, column) sequence last placed.
   bool samePattern(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size) const;
 
+  /// Whether upper_'s nonzero values fall within nonzero_'s pattern, and that pattern has at
+  /// most kMostZeroShare of entries that are zero now.
+  bool nonzerosFitAnalysed() const;
+  /// Builds nonzero_ from upper_'s nonzero values and diagonal and analyses it.
+  bool analyzeNonzeros();
+  /// Factorizes upper_, or with leaveOutZeros() its nonzero entries (nonzero_).
+  bool factorizeValues();
+
   /// After factorizing a new analysis: its fill per matrix entry, or whether it has grown past
   /// kMostFillGrowth of the last ordering's (then the next analysis orders anew).
   void watchFill(bool analysed);
@@ -62,16 +89,25 @@ class PatternCachedLdlt {
   /// Growth of the factor's fill per matrix entry, since the last ordering, that brings a new
   /// one [-].
   static constexpr double kMostFillGrowth = 1.1;
-  bool ordered_ = false;        ///< the last analysis computed its ordering
-  bool reorder_next_ = true;    ///< the next analysis computes a new ordering
-  double ordered_fill_ = 0.0;   ///< factor nonzeros per matrix nonzero at the last ordering [-]
-  std::vector<int> entry_row_;  ///< row of each entry last placed
-  std::vector<int> entry_col_;  ///< column of each entry last placed
+  /// Share of the entries of the analysed nonzero pattern that may be zero before it is analysed
+  /// anew (leaveOutZeros()) [-].
+  static constexpr double kMostZeroShare = 0.1;
+  bool leave_out_zeros_ = false;  ///< see leaveOutZeros()
+  bool ordered_ = false;          ///< the last analysis computed its ordering
+  bool reorder_next_ = true;      ///< the next analysis computes a new ordering
+  double ordered_fill_ = 0.0;     ///< factor nonzeros per matrix nonzero at the last ordering [-]
+  std::vector<int> entry_row_;    ///< row of each entry last placed
+  std::vector<int> entry_col_;    ///< column of each entry last placed
   /// Per entry: its index in upper_'s values, -1 for an entry of the upper triangle (not read).
   std::vector<int> slot_;
   Eigen::VectorXi new_index_;  ///< row i of the matrix is row new_index_[i] of the permuted one
   Eigen::SparseMatrix<double> upper_;  ///< upper triangle of P A P^T
-  mutable Eigen::VectorXd permuted_;   ///< a right-hand side in the permuted order
+  /// With leaveOutZeros(): upper_ without its zero entries off the diagonal, as last analysed.
+  Eigen::SparseMatrix<double> nonzero_;
+  /// Per value of upper_: its index in nonzero_'s values, -1 when left out.
+  std::vector<int> nonzero_slot_;
+  long zero_free_analyses_ = 0;
+  mutable Eigen::VectorXd permuted_;  ///< a right-hand side in the permuted order
   long analyses_ = 0;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper, Eigen::NaturalOrdering<int>>
       ldlt_;

@@ -65,6 +65,12 @@ class StiffNewtonStep {
   /// its friction bound may flip between sticking and sliding with the same impulse: the flags
   /// alone would never settle).
   double impulseChange() const { return impulse_change_; }
+  /// Whether the last apply() stopped its pivoting at kQuickPivotingPasses with the taut set
+  /// still changing: its step solved a linearized problem whose complementarity is not exact
+  /// (a taut edge may push, a slack one be stretched), and a projection must not end on it.
+  bool stoppedEarly() const { return stopped_early_; }
+  /// From now on in this projection, every Newton step pivots until its taut set holds.
+  void pivotFully() { full_pivoting_ = true; }
   /// From now on in this projection, each Newton step's solve takes one pass of iterative
   /// refinement (refine()): for Newton steps that have stalled at the round-off of a solve that is
   /// not backward stable.
@@ -74,6 +80,8 @@ class StiffNewtonStep {
   void beginProjection(double time_step) {
     newton_steps_ = 0;
     refine_ = false;
+    full_pivoting_ = false;
+    stopped_early_ = false;
     const double longer = time_step / kCompliantStep;
     compliance_ = longer > 1.0 ? kContactCompliance / (longer * longer) : kContactCompliance;
   }
@@ -136,7 +144,17 @@ class StiffNewtonStep {
   double linearizedStretch(const EdgeSet& edges, const EdgeStretchState& stretch_state,
                            std::size_t e, const std::vector<Eigen::Vector3d>& position) const;
 
-  static constexpr int kMaxPivotingPasses = 30;    ///< re-solves after changing the taut set
+  static constexpr int kMaxPivotingPasses = 30;  ///< re-solves after changing the taut set
+  /// Re-solves after changing the taut set in a quick Newton step (contact-free graphs that are
+  /// no chain): solving each intermediate linearization's complementarity problem exactly is
+  /// wasted work, the next Newton step changes the taut set anyway (as a semismooth Newton or
+  /// primal-dual active-set iteration does, once per linearization) [-].
+  static constexpr int kQuickPivotingPasses = 1;
+  /// Newton steps of a projection that pivot quickly; the later ones pivot fully, so that an
+  /// iteration whose taut set cycles still ends [-].
+  static constexpr int kQuickNewtonSteps = 8;
+  bool full_pivoting_ = false;                     ///< see pivotFully()
+  bool stopped_early_ = false;                     ///< see stoppedEarly()
   static constexpr double kSlackTolerance = 1e-9;  ///< stretch (per rest length) that makes taut
   /// Every edge joins consecutive vertices (chains): the rows are then banded and factorized in
   /// natural order, O(N); other graphs use Eigen's default (AMD) ordering.

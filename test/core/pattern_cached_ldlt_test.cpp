@@ -1,0 +1,96 @@
+// PatternCachedLdlt leaving stored zeros out of the factorization (leaveOutZeros()): the same
+// solution as with them, a factor without their fill, and a new analysis only when a nonzero
+// falls outside the analysed one.
+#include "yarn_tearing/core/pattern_cached_ldlt.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+namespace yarn_tearing::test {
+namespace {
+
+/// A quasi-definite system shaped like a Newton step's: `n` unit masses in a ring (one row
+/// each), each pair of neighbours joined by an edge row (gradient -1, +1, compliance 1e-3).
+/// Edge rows with `idle` set list the same entries with zero couplings and -1 on the diagonal,
+/// as the idle rows of slack edges do.
+std::vector<Eigen::Triplet<double>> ringSystem(int n, const std::vector<bool>& idle) {
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int v = 0; v < n; ++v) entries.emplace_back(v, v, 1.0 + 0.1 * v);
+  for (int e = 0; e < n; ++e) {
+    const int row = n + e;
+    const int a = e;
+    const int b = (e + 1) % n;
+    const double coupling = idle[e] ? 0.0 : 1.0;
+    entries.emplace_back(row, a, -coupling);
+    entries.emplace_back(a, row, -coupling);
+    entries.emplace_back(row, b, coupling);
+    entries.emplace_back(b, row, coupling);
+    entries.emplace_back(row, row, idle[e] ? -1.0 : -1e-3);
+  }
+  return entries;
+}
+
+Eigen::VectorXd denseSolve(const std::vector<Eigen::Triplet<double>>& entries, int size,
+                           const Eigen::VectorXd& rhs) {
+  Eigen::SparseMatrix<double> sparse(size, size);
+  sparse.setFromTriplets(entries.begin(), entries.end());
+  return Eigen::MatrixXd(sparse).partialPivLu().solve(rhs);
+}
+
+TEST(PatternCachedLdlt, LeavesStoredZerosOutOfTheFactor) {
+  constexpr int kVertices = 40;
+  constexpr int kSize = 2 * kVertices;
+  // Every third edge slack: the ring falls apart into chains, whose factor has no fill.
+  std::vector<bool> idle(kVertices, false);
+  for (int e = 0; e < kVertices; e += 3) idle[e] = true;
+  const std::vector<Eigen::Triplet<double>> entries = ringSystem(kVertices, idle);
+  const Eigen::VectorXd rhs = Eigen::VectorXd::LinSpaced(kSize, -1.0, 2.0);
+
+  PatternCachedLdlt with_zeros;
+  PatternCachedLdlt without_zeros;
+  without_zeros.leaveOutZeros();
+  ASSERT_TRUE(with_zeros.factorize(entries, kSize));
+  ASSERT_TRUE(without_zeros.factorize(entries, kSize));
+  const Eigen::VectorXd expected = denseSolve(entries, kSize, rhs);
+  EXPECT_LT((with_zeros.solve(rhs) - expected).norm(), 1e-12 * expected.norm());
+  EXPECT_LT((without_zeros.solve(rhs) - expected).norm(), 1e-12 * expected.norm());
+  // The idle rows and the couplings of the ring they cut add fill only with the zeros.
+  EXPECT_LT(without_zeros.factorNonZeros(), with_zeros.factorNonZeros());
+  EXPECT_EQ(without_zeros.zeroFreeAnalyses(), 1);
+}
+
+TEST(PatternCachedLdlt, AnalysesTheNonzerosAnewOnlyWhenTheyOutgrowThem) {
+  constexpr int kVertices = 40;
+  constexpr int kSize = 2 * kVertices;
+  std::vector<bool> idle(kVertices, false);
+  for (int e = 0; e < kVertices; e += 3) idle[e] = true;
+  PatternCachedLdlt ldlt;
+  ldlt.leaveOutZeros();
+  ASSERT_TRUE(ldlt.factorize(ringSystem(kVertices, idle), kSize));
+  ASSERT_EQ(ldlt.zeroFreeAnalyses(), 1);
+  ASSERT_EQ(ldlt.analyses(), 1);
+
+  // One more slack edge: its zeros fall within the analysed nonzeros (one edge of 40 is within
+  // kMostZeroShare), which are kept.
+  std::vector<bool> fewer = idle;
+  fewer[1] = true;
+  const Eigen::VectorXd rhs = Eigen::VectorXd::LinSpaced(kSize, 1.0, -3.0);
+  ASSERT_TRUE(ldlt.factorize(ringSystem(kVertices, fewer), kSize));
+  EXPECT_EQ(ldlt.zeroFreeAnalyses(), 1);
+  Eigen::VectorXd expected = denseSolve(ringSystem(kVertices, fewer), kSize, rhs);
+  EXPECT_LT((ldlt.solve(rhs) - expected).norm(), 1e-12 * expected.norm());
+
+  // A slack edge taut again: a nonzero outside the analysed ones, analysed anew; the listed
+  // pattern is the same, so the ordering and the slots are kept.
+  std::vector<bool> more = idle;
+  more[0] = false;
+  ASSERT_TRUE(ldlt.factorize(ringSystem(kVertices, more), kSize));
+  EXPECT_EQ(ldlt.zeroFreeAnalyses(), 2);
+  EXPECT_EQ(ldlt.analyses(), 1);
+  expected = denseSolve(ringSystem(kVertices, more), kSize, rhs);
+  EXPECT_LT((ldlt.solve(rhs) - expected).norm(), 1e-12 * expected.norm());
+}
+
+}  // namespace
+}  // namespace yarn_tearing::test
