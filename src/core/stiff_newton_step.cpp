@@ -258,8 +258,9 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
   frontier_.reset(edges.size());
   // Block principal pivoting, as in the fast iterations: release the taut edges that would
   // push, take in the slack ones that the step would stretch (with the taut frontier), solve
-  // again. On a contact-free graph that is no chain, only kQuickPivotingPasses times in the
-  // first Newton steps (stoppedEarly()).
+  // again. On a contact-free graph that is no chain, the first kQuickNewtonSteps solve once:
+  // the next linearization takes its taut set from this step's multipliers and stretches
+  // (stoppedEarly()).
   const bool quick =
       !banded_ && contacts == nullptr && !full_pivoting_ && newton_steps_ <= kQuickNewtonSteps;
   stopped_early_ = false;
@@ -297,7 +298,7 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
     }
     if (contacts != nullptr && pivotContacts(*contacts, inverse_mass, position)) changed = true;
     if (!changed) break;
-    if (quick && pass == kQuickPivotingPasses) {
+    if (quick) {
       stopped_early_ = true;
       break;
     }

@@ -37,9 +37,12 @@ struct StartDirections {
 /// when a heavy end swings a light yarn), and the fixed point conserves momentum exactly.
 /// The taut set is settled by block principal pivoting: edges whose multiplier comes out
 /// negative are released, slack edges the step would stretch are taken in (runs of them at once,
-/// by a TautFrontier), and it is solved again. Edge ends that StartDirections marks take the
-/// start direction instead of J(x) in the force balance; the symmetric matrix with J(x) then
-/// preconditions a few refinement passes on the exact (unsymmetric) system (without contacts).
+/// by a TautFrontier), and it is solved again; on contact-free graphs that are no chain, the
+/// first Newton steps of a projection solve once and leave the taut set to the next
+/// linearization, which takes it from their multipliers and stretches (kQuickNewtonSteps,
+/// stoppedEarly()). Edge ends that StartDirections marks take the start direction instead of J(x)
+/// in the force balance; the symmetric matrix with J(x) then preconditions a few refinement passes
+/// on the exact (unsymmetric) system (without contacts).
 ///
 /// Contacts (ContactSet) are more rows of the same system, placed after their later vertex so
 /// that a chain's system stays banded: a touching point's normal row (an equality while it
@@ -65,8 +68,8 @@ class StiffNewtonStep {
   /// its friction bound may flip between sticking and sliding with the same impulse: the flags
   /// alone would never settle).
   double impulseChange() const { return impulse_change_; }
-  /// Whether the last apply() stopped its pivoting at kQuickPivotingPasses with the taut set
-  /// still changing: its step solved a linearized problem whose complementarity is not exact
+  /// Whether the last apply() was a quick Newton step (kQuickNewtonSteps) whose pivoting changed
+  /// the taut set: its step solved a linearized problem whose complementarity is not exact
   /// (a taut edge may push, a slack one be stretched), and a projection must not end on it.
   bool stoppedEarly() const { return stopped_early_; }
   /// From now on in this projection, every Newton step pivots until its taut set holds.
@@ -145,13 +148,13 @@ class StiffNewtonStep {
                            std::size_t e, const std::vector<Eigen::Vector3d>& position) const;
 
   static constexpr int kMaxPivotingPasses = 30;  ///< re-solves after changing the taut set
-  /// Re-solves after changing the taut set in a quick Newton step (contact-free graphs that are
-  /// no chain): solving each intermediate linearization's complementarity problem exactly is
-  /// wasted work, the next Newton step changes the taut set anyway (as a semismooth Newton or
-  /// primal-dual active-set iteration does, once per linearization) [-].
-  static constexpr int kQuickPivotingPasses = 1;
-  /// Newton steps of a projection that pivot quickly; the later ones pivot fully, so that an
-  /// iteration whose taut set cycles still ends [-].
+  /// Newton steps of a projection that solve once on a contact-free graph that is no chain
+  /// (quick Newton steps): solving every intermediate linearization's complementarity problem
+  /// exactly is wasted work, as the next linearization moves the taut set again. Pivoted once per
+  /// linearization (a primal-dual active-set, or semismooth Newton, iteration), a plain step of
+  /// the 32 x 32 trouser tear took 5-6 Newton steps of one factorization each instead of 3 of
+  /// 5-12. Later Newton steps pivot fully, so that an iteration whose taut set cycles still
+  /// ends [-].
   static constexpr int kQuickNewtonSteps = 8;
   bool full_pivoting_ = false;                     ///< see pivotFully()
   bool stopped_early_ = false;                     ///< see stoppedEarly()
