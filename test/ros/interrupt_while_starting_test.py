@@ -1,11 +1,11 @@
 #!/usr/bin/python3
 """SIGINT and SIGTERM end yarn_tearing_node at once while it validates and builds a scene at the
-scene budget (seconds of work that checks no ROS flag): exit status 128 + signal within
+scene budget (a quarter of a second to seconds of work that checks no ROS flag): exit status 128 + signal within
 EXIT_WITHIN seconds, with one line on stderr.
 
 The config is uploaded to its own namespace per case, and the node binary is run directly with
 __name:=<namespace>; the signal is sent once the node has registered with the master (so that
-it is past ros::init) and before its build can be done."""
+it is past ros::init) and 20 ms later, well before its build can be done."""
 import os
 import signal
 import subprocess
@@ -20,7 +20,8 @@ import rostest
 
 EXIT_WITHIN = 2.0      # [s] from the signal to the process's exit
 REGISTER_WITHIN = 20.0  # [s] for the node to register with the master
-AFTER_REGISTERING = 0.3  # [s] before the signal: validation has begun, the build is far from done
+AFTER_REGISTERING = 0.02  # [s] before the signal: past ros::init; the build (about 0.25 s on a 2.6 GHz
+#                          Xeon, seconds on slower machines) is far from done
 
 
 def wait_for_registration(name, timeout):
