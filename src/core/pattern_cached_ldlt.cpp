@@ -155,9 +155,8 @@ void PatternCachedLdlt::watchFill(bool analysed) {
 
 bool PatternCachedLdlt::factorize(const std::vector<Eigen::Triplet<double>>& entries,
                                   Eigen::Index size) {
-  const bool placed = samePattern(entries, size);
-  const bool analysed = !placed;
-  if (!placed && !analyze(entries, size)) {
+  const bool analysed = !samePattern(entries, size);
+  if (analysed && !analyze(entries, size)) {
     entry_row_.clear();
     entry_col_.clear();
     return false;
