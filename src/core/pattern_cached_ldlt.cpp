@@ -72,10 +72,7 @@ bool PatternCachedLdlt::analyze(const std::vector<Eigen::Triplet<double>>& entri
   upper_.setFromTriplets(pattern.begin(), pattern.end());
   upper_.makeCompressed();
   nonzero_slot_.clear();
-  if (!leave_out_zeros_) {
-    ldlt_.analyzePattern(upper_);
-    if (ldlt_.info() != Eigen::Success) return false;
-  }
+  if (!leave_out_zeros_ && !ldlt_.analyzePattern(upper_)) return false;
   return placeEntries(entries);
 }
 
@@ -122,23 +119,18 @@ bool PatternCachedLdlt::analyzeNonzeros() {
     }
     nonzero_outer[j + 1] = next;
   }
-  ldlt_.analyzePattern(nonzero_);
-  return ldlt_.info() == Eigen::Success;
+  return ldlt_.analyzePattern(nonzero_);
 }
 
 bool PatternCachedLdlt::factorizeValues() {
-  if (!leave_out_zeros_) {
-    ldlt_.factorize(upper_);
-    return ldlt_.info() == Eigen::Success;
-  }
+  if (!leave_out_zeros_) return ldlt_.factorize(upper_);
   if (!nonzerosFitAnalysed() && !analyzeNonzeros()) return false;
   const double* values = upper_.valuePtr();
   double* kept = nonzero_.valuePtr();
   for (std::size_t k = 0; k < nonzero_slot_.size(); ++k) {
     if (nonzero_slot_[k] >= 0) kept[nonzero_slot_[k]] = values[k];
   }
-  ldlt_.factorize(nonzero_);
-  return ldlt_.info() == Eigen::Success;
+  return ldlt_.factorize(nonzero_);
 }
 
 void PatternCachedLdlt::watchFill(bool analysed) {

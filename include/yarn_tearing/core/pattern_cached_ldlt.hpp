@@ -1,14 +1,15 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <vector>
+
+#include "yarn_tearing/core/supernodal_ldlt.hpp"
 
 namespace yarn_tearing {
 
 /// A sparse LDL^T of a symmetric matrix given as a list of entries (both triangles listed, the
-/// lower one read; duplicates summed), with an AMD fill-reducing ordering (Eigen's SimplicialLDLT
+/// lower one read; duplicates summed), with an AMD fill-reducing ordering (a SupernodalLdlt
 /// underneath). The symbolic part (the permuted upper triangle's pattern, where each entry lands
 /// in it, the elimination tree and column counts) is kept while the entries fall within the
 /// analysed pattern: their values are then scattered straight into the permuted matrix and only
@@ -53,7 +54,7 @@ class PatternCachedLdlt {
     const Eigen::Index size = new_index_.size();
     permuted_.resize(size);
     for (Eigen::Index i = 0; i < size; ++i) permuted_[new_index_[i]] = rhs[i];
-    permuted_ = ldlt_.solve(permuted_);
+    ldlt_.solveInPlace(permuted_);
     Eigen::VectorXd result(size);
     for (Eigen::Index i = 0; i < size; ++i) result[i] = permuted_[new_index_[i]];
     return result;
@@ -63,7 +64,7 @@ class PatternCachedLdlt {
   /// Analyses of the nonzero entries' pattern so far (leaveOutZeros()) [-].
   long zeroFreeAnalyses() const { return zero_free_analyses_; }
   /// Nonzeros of the last factor's L [-] (for tests and benchmarks).
-  Eigen::Index factorNonZeros() const { return ldlt_.matrixL().nestedExpression().nonZeros(); }
+  Eigen::Index factorNonZeros() const { return ldlt_.factorNonZeros(); }
 
  private:
   /// Orders, builds the permuted upper triangle's pattern and each entry's slot in it.
@@ -109,8 +110,7 @@ class PatternCachedLdlt {
   long zero_free_analyses_ = 0;
   mutable Eigen::VectorXd permuted_;  ///< a right-hand side in the permuted order
   long analyses_ = 0;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper, Eigen::NaturalOrdering<int>>
-      ldlt_;
+  SupernodalLdlt ldlt_;
 };
 
 }  // namespace yarn_tearing
