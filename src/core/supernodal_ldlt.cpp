@@ -278,7 +278,7 @@ void SupernodalLdlt::placeEntries() {
   }
 }
 
-bool SupernodalLdlt::analyzePattern(const Eigen::SparseMatrix<double>& upper) {
+bool SupernodalLdlt::analyzeCounts(const Eigen::SparseMatrix<double>& upper) {
   if (upper.rows() != upper.cols() || !upper.isCompressed()) return false;
   size_ = upper.rows();
   nonzeros_ = upper.nonZeros();
@@ -296,6 +296,14 @@ bool SupernodalLdlt::analyzePattern(const Eigen::SparseMatrix<double>& upper) {
   renumber(order_);
   buildLowerPattern(upper);
   columnCounts();
+  cost_ = 0.0;
+  for (const int count : count_) cost_ += static_cast<double>(count - 1) * (count - 1);
+  return true;
+}
+
+bool SupernodalLdlt::analyzePattern(const Eigen::SparseMatrix<double>& upper) {
+  first_column_.clear();
+  if (!analyzeCounts(upper)) return false;
   findSupernodes();
   local_row_.assign(static_cast<std::size_t>(size_), 0);
   collectRows();
@@ -390,7 +398,9 @@ bool SupernodalLdlt::factorizeBlock(Eigen::Index s) {
 }
 
 bool SupernodalLdlt::factorize(const Eigen::SparseMatrix<double>& upper) {
-  if (upper.rows() != size_ || upper.nonZeros() != nonzeros_) return false;
+  if (first_column_.empty() || upper.rows() != size_ || upper.nonZeros() != nonzeros_) {
+    return false;
+  }
   std::fill(values_.begin(), values_.end(), 0.0);
   const double* entries = upper.valuePtr();
   for (Eigen::Index p = 0; p < nonzeros_; ++p) values_[entry_slot_[p]] += entries[p];

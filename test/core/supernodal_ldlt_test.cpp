@@ -1,6 +1,7 @@
-// SupernodalLdlt against a dense solve and Eigen's simplicial LDL^T: quasi-definite systems shaped
-// like the Newton step's (a grid of vertex blocks joined by edge rows), a diagonal missing from
-// the pattern, the same factor's nonzeros, a refactorization with new values, and a zero pivot.
+// SupernodalLdlt (and SparseLdlt choosing it) against a dense solve and Eigen's simplicial LDL^T:
+// quasi-definite systems shaped like the Newton step's (a grid of vertex blocks joined by edge
+// rows), a diagonal missing from the pattern, the same factor's nonzeros, a refactorization with
+// new values, and a zero pivot.
 #include "yarn_tearing/core/supernodal_ldlt.hpp"
 
 #include <gtest/gtest.h>
@@ -9,6 +10,8 @@
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
 #include <cmath>
+
+#include "yarn_tearing/core/sparse_ldlt.hpp"
 
 namespace yarn_tearing::test {
 namespace {
@@ -179,6 +182,43 @@ TEST(SupernodalLdlt, RefusesAZeroPivotAndEntriesBelowTheDiagonal) {
   lower.insert(1, 0) = 1.0;
   lower.makeCompressed();
   EXPECT_FALSE(ldlt.analyzePattern(lower));
+}
+
+}  // namespace
+}  // namespace yarn_tearing::test
+
+namespace yarn_tearing::test {
+namespace {
+
+TEST(SparseLdlt, ChoosesTheSupernodalKernelForDenseFrontsOnly) {
+  // A 40 x 40 grid's Newton-like system has the 64 x 64 trouser tear's dense fronts; an 8 x 8
+  // one's are small.
+  for (const int side : {8, 40}) {
+    const Eigen::SparseMatrix<double> upper = orderedUpper(gridSystem(side, 1.0));
+    SupernodalLdlt supernodal;
+    ASSERT_TRUE(supernodal.analyzePattern(upper));
+    const bool dense = supernodal.factorizationCost() >= SparseLdlt::kSupernodalCost;
+    EXPECT_EQ(dense, side == 40);
+    SparseLdlt ldlt;
+    ASSERT_TRUE(ldlt.analyzePattern(upper));
+    EXPECT_EQ(ldlt.supernodal(), dense);
+    ASSERT_TRUE(ldlt.factorize(upper));
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(upper.rows(), -1.0, 1.0);
+    Eigen::VectorXd x = b;
+    ldlt.solveInPlace(x);
+    EXPECT_LT(backwardError(upper, x, b), kSameRoundOff * simplicialBackwardError(upper, b));
+    // The kernels agree on the cost.
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper, Eigen::NaturalOrdering<int>>
+        simplicial(upper);
+    const Eigen::VectorXd column_counts =
+        Eigen::Map<const Eigen::VectorXi>(
+            simplicial.matrixL().nestedExpression().outerIndexPtr() + 1, upper.rows())
+            .cast<double>() -
+        Eigen::Map<const Eigen::VectorXi>(simplicial.matrixL().nestedExpression().outerIndexPtr(),
+                                          upper.rows())
+            .cast<double>();
+    EXPECT_DOUBLE_EQ(supernodal.factorizationCost(), column_counts.squaredNorm());
+  }
 }
 
 }  // namespace

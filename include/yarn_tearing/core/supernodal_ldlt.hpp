@@ -35,10 +35,16 @@ class SupernodalLdlt {
   /// Nonzeros of L below the diagonal in the analysed pattern (without the zeros a relaxed
   /// supernode stores) [-].
   Eigen::Index factorNonZeros() const { return factor_nonzeros_; }
+  /// The analysed factorization's cost: the sum over the columns of L of the squared nonzeros
+  /// below the diagonal, the multiply-adds of its updates [-].
+  double factorizationCost() const { return cost_; }
   /// Number of supernodes of the last analysis [-] (for tests and benchmarks).
   Eigen::Index supernodes() const { return static_cast<Eigen::Index>(first_column_.size()) - 1; }
 
  private:
+  /// Checks `upper`'s form and computes its elimination tree, postorder and column counts in the
+  /// postordered numbering; false when it is not of the form analyzePattern() takes.
+  bool analyzeCounts(const Eigen::SparseMatrix<double>& upper);
   /// The elimination tree of `upper` (parent_), in its own order.
   void eliminationTree(const Eigen::SparseMatrix<double>& upper);
   /// A postorder of the elimination tree into `order` (order[k] the k-th column; children in
@@ -88,6 +94,7 @@ class SupernodalLdlt {
   std::vector<Eigen::Index> block_start_;  ///< where each supernode's block starts in values_
   std::vector<Eigen::Index> entry_slot_;  ///< per entry of the upper triangle: its place in values_
   Eigen::Index factor_nonzeros_ = 0;      ///< see factorNonZeros()
+  double cost_ = 0.0;                     ///< see factorizationCost()
   std::vector<double> values_;            ///< the blocks of L, column-major; D on the diagonal
   std::vector<double> diagonal_;          ///< D
   // Scratch of analyzePattern().

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include "yarn_tearing/core/supernodal_ldlt.hpp"
+
+namespace yarn_tearing {
+
+/// An LDL^T (no pivoting) of a sparse symmetric matrix given by its upper triangle in the order
+/// it is to be eliminated, by whichever of two kernels suits its factor: the supernodal one
+/// (SupernodalLdlt) where the factor has dense fronts whose products pay for its dearer analysis,
+/// Eigen's simplicial one elsewhere. Each analysis measures the factor's cost (the sum over the
+/// columns of L of the squared nonzeros below the diagonal) with the kernel in use; where it
+/// has crossed to the other kernel's side (kSupernodalCost, kSimplicialCost: apart, so that a
+/// cost near them does not switch back and forth), the other kernel analyses it again and is
+/// used from then on.
+///
+/// Measured on dumped Newton-step systems of the trouser tear (factorization, analysis, one
+/// solve; 2-core Intel Xeon, GCC 12 -O3): 64 x 64 (19,827 rows, cost 1.6e7) supernodal 3.2, 2.3,
+/// 0.43 ms against simplicial 5.5, 1.4, 0.39 ms; 32 x 32 (4,795 rows, cost 1.2e6) 0.58, 0.65,
+/// 0.096 ms against 0.65, 0.31, 0.077 ms; the hanging 64 x 64 fabric's edge Gram matrix (8,064
+/// rows, cost 9e5) 0.29, 0.42, 0.084 ms against 0.25, 0.17, 0.066 ms.
+class SparseLdlt {
+ public:
+  /// Analyses `upper`'s pattern (square, compressed, entries on and above the diagonal); false
+  /// when it is not of that form.
+  bool analyzePattern(const Eigen::SparseMatrix<double>& upper);
+  /// Factorizes `upper`, of the analysed pattern; false when a pivot is zero or not finite.
+  bool factorize(const Eigen::SparseMatrix<double>& upper);
+  /// Solves A x = b with the last factorization, in place (b in, x out).
+  void solveInPlace(Eigen::VectorXd& x) const;
+  /// Nonzeros of L below the diagonal in the analysed pattern [-].
+  Eigen::Index factorNonZeros() const;
+  /// Whether the supernodal kernel is in use [-] (for tests and benchmarks).
+  bool supernodal() const { return supernodal_; }
+
+  /// Factor cost (multiply-adds, the sum over the columns of L of the squared nonzeros below
+  /// the diagonal) from which the simplicial kernel hands over to the supernodal one [-]:
+  /// between the 32 x 32 and the 64 x 64 trouser tear's Newton systems (1.2e6 and 1.6e7), where
+  /// it is slower and 1.7 times faster per factorization.
+  static constexpr double kSupernodalCost = 4e6;
+  /// Factor cost below which the supernodal kernel hands back to the simplicial one [-].
+  static constexpr double kSimplicialCost = 2e6;
+
+ private:
+  /// Eigen's simplicial LDL^T, which tells its analysis's cost.
+  class SimplicialLdlt : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper,
+                                                      Eigen::NaturalOrdering<int>> {
+   public:
+    /// As SupernodalLdlt::factorizationCost() [-].
+    double factorizationCost() const {
+      return static_cast<double>(this->m_nonZerosPerCol.template cast<double>().squaredNorm());
+    }
+  };
+
+  /// Analyses `upper` with the kernel in use.
+  bool analyzeWith(const Eigen::SparseMatrix<double>& upper);
+
+  bool supernodal_ = false;
+  SupernodalLdlt supernodal_ldlt_;
+  SimplicialLdlt simplicial_ldlt_;
+  mutable Eigen::VectorXd solution_;  ///< the simplicial kernel's solve
+};
+
+}  // namespace yarn_tearing
