@@ -146,8 +146,9 @@ void PatternCachedLdlt::watchFill(bool analysed) {
 }
 
 bool PatternCachedLdlt::factorize(const std::vector<Eigen::Triplet<double>>& entries,
-                                  Eigen::Index size) {
-  const bool analysed = !samePattern(entries, size);
+                                  Eigen::Index size, bool same_as_last) {
+  const bool placed = new_index_.size() == size && entry_row_.size() == entries.size();
+  const bool analysed = !(same_as_last && placed) && !samePattern(entries, size);
   if (analysed && !analyze(entries, size)) {
     entry_row_.clear();
     entry_col_.clear();

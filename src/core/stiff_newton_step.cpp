@@ -135,7 +135,9 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
   } else {
     // The idle rows' stored zeros stay out of the elimination: they only keep the pattern.
     general_factorization_.leaveOutZeros();
-    if (!general_factorization_.factorize(triplets_, rows)) return false;
+    if (!general_factorization_.factorize(triplets_, rows, sameLayoutAsLast(contacts))) {
+      return false;
+    }
   }
   if (!solveAssembled(rhs_, solution_)) return false;
   if (refine_ && !refine([this](const Eigen::VectorXd& rhs, Eigen::VectorXd& result) {
@@ -156,6 +158,19 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     }
   }
   return solution_.allFinite();
+}
+
+bool StiffNewtonStep::sameLayoutAsLast(const ContactSet* contacts) {
+  // Without contacts the entries are listed by a fixed walk over the vertices' rows and the
+  // edges' (taut or idle: the same entries), so the same rows list the same entries.
+  layout_.assign(vertex_row_.begin(), vertex_row_.end());
+  for (std::size_t e = 0; e < edge_row_.size(); ++e) {
+    layout_.push_back(edge_row_[e] >= 0 ? edge_row_[e] : idle_row_[e]);
+  }
+  const bool same = contacts == nullptr && last_contact_free_ && layout_ == last_layout_;
+  last_layout_.swap(layout_);
+  last_contact_free_ = contacts == nullptr;
+  return same;
 }
 
 bool StiffNewtonStep::solveAssembled(const Eigen::VectorXd& rhs, Eigen::VectorXd& result) {

@@ -97,38 +97,39 @@ double simplicialBackwardError(const Eigen::SparseMatrix<double>& upper, const E
 /// simplicial one's [-].
 constexpr double kSameRoundOff = 4.0;
 
-TEST(SupernodalLdlt, SolvesAGridKktSystemAsADenseSolve) {
-  const Eigen::SparseMatrix<double> upper = orderedUpper(gridSystem(8, 1.0));
-  SupernodalLdlt ldlt;
+/// Solves upper's system for b with `ldlt` analysed and factorized on it, and checks the
+/// solution against `expected` (1e-10 relative) and its backward error against the simplicial
+/// one's.
+void expectSolves(SupernodalLdlt& ldlt, const Eigen::SparseMatrix<double>& upper,
+                  const Eigen::VectorXd& b, const Eigen::VectorXd& expected) {
   ASSERT_TRUE(ldlt.analyzePattern(upper));
   ASSERT_TRUE(ldlt.factorize(upper));
-  // Fewer supernodes than columns: vertex blocks and separators share them.
-  EXPECT_LT(ldlt.supernodes(), upper.rows() / 2);
-  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(upper.rows(), -1.0, 2.0);
   Eigen::VectorXd x = b;
   ldlt.solveInPlace(x);
-  const Eigen::SparseMatrix<double> full = upper.selfadjointView<Eigen::Upper>();
-  const Eigen::MatrixXd dense(full);
-  const Eigen::VectorXd expected = dense.partialPivLu().solve(b);
   EXPECT_LT((x - expected).norm(), 1e-10 * expected.norm());
   EXPECT_LT(backwardError(upper, x, b), kSameRoundOff * simplicialBackwardError(upper, b));
 }
 
+TEST(SupernodalLdlt, SolvesAGridKktSystemAsADenseSolve) {
+  const Eigen::SparseMatrix<double> upper = orderedUpper(gridSystem(8, 1.0));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(upper.rows(), -1.0, 2.0);
+  const Eigen::SparseMatrix<double> full = upper.selfadjointView<Eigen::Upper>();
+  const Eigen::MatrixXd dense(full);
+  SupernodalLdlt ldlt;
+  expectSolves(ldlt, upper, b, dense.partialPivLu().solve(b));
+  // Fewer supernodes than columns: vertex blocks and separators share them.
+  EXPECT_LT(ldlt.supernodes(), upper.rows() / 2);
+}
+
 TEST(SupernodalLdlt, HasTheSimplicialFactorsNonzerosAndSolution) {
   const Eigen::SparseMatrix<double> upper = orderedUpper(gridSystem(24, 1.0));
-  SupernodalLdlt ldlt;
-  ASSERT_TRUE(ldlt.analyzePattern(upper));
-  ASSERT_TRUE(ldlt.factorize(upper));
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper, Eigen::NaturalOrdering<int>>
       simplicial(upper);
   ASSERT_EQ(simplicial.info(), Eigen::Success);
-  EXPECT_EQ(ldlt.factorNonZeros(), simplicial.matrixL().nestedExpression().nonZeros());
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(upper.rows(), 3.0, -1.0);
-  Eigen::VectorXd x = b;
-  ldlt.solveInPlace(x);
-  const Eigen::VectorXd expected = simplicial.solve(b);
-  EXPECT_LT((x - expected).norm(), 1e-10 * expected.norm());
-  EXPECT_LT(backwardError(upper, x, b), kSameRoundOff * simplicialBackwardError(upper, b));
+  SupernodalLdlt ldlt;
+  expectSolves(ldlt, upper, b, simplicial.solve(b));
+  EXPECT_EQ(ldlt.factorNonZeros(), simplicial.matrixL().nestedExpression().nonZeros());
 }
 
 TEST(SupernodalLdlt, RefactorizesNewValuesOfTheSamePattern) {

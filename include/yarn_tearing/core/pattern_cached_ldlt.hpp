@@ -46,8 +46,12 @@ class PatternCachedLdlt {
   /// From now on, leaves entries that are exactly zero out of the factorization (see above).
   void leaveOutZeros() { leave_out_zeros_ = true; }
 
-  /// Factorizes the size x size matrix of `entries`; false when the factorization fails.
-  bool factorize(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size);
+  /// Factorizes the size x size matrix of `entries`; false when the factorization fails. With
+  /// `same_as_last`, the caller vouches that the entries list the same (row, column) sequence as
+  /// in its last call (its layout has not changed), which is then not compared entry by entry
+  /// (for a 64 x 64 fabric's Newton system 450,000 entries, 4 % of a tearing step).
+  bool factorize(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size,
+                 bool same_as_last = false);
   /// Solves with the last factorization.
   template <typename Rhs>
   Eigen::VectorXd solve(const Rhs& rhs) const {

@@ -96,6 +96,10 @@ class StiffNewtonStep {
   void exactResidual(const EdgeSet& edges, const std::vector<Eigen::Vector3d>& position,
                      const std::vector<double>& inverse_mass, const std::vector<double>& multiplier,
                      const EdgeStretchState& stretch_state);
+  /// Whether this solve's rows (vertex_row_, edge_row_, idle_row_) are laid out as in the last
+  /// one on the general path and neither has contacts: then its entries list the same pattern
+  /// (PatternCachedLdlt::factorize's `same_as_last`). Keeps this layout for the next.
+  bool sameLayoutAsLast(const ContactSet* contacts);
   /// Solves the assembled symmetric system for `rhs`, into `result`.
   bool solveAssembled(const Eigen::VectorXd& rhs, Eigen::VectorXd& result);
   /// One pass of iterative refinement of solution_ on the assembled matrix_, `solve(rhs,
@@ -191,9 +195,12 @@ class StiffNewtonStep {
   /// a point sticking in one and sliding in the next) [-].
   static constexpr int kStickingNewtonSteps = 10;
   std::vector<Eigen::Vector3d> previous_impulse_;  ///< per contact, before the solve [kg m]
-  std::vector<int> vertex_row_;  ///< first row of each free vertex, -1 for supports
-  std::vector<int> edge_row_;    ///< row of each taut edge, -1 otherwise
-  std::vector<int> idle_row_;    ///< row of each slack movable edge (not banded), -1 otherwise
+  std::vector<int> vertex_row_;   ///< first row of each free vertex, -1 for supports
+  std::vector<int> edge_row_;     ///< row of each taut edge, -1 otherwise
+  std::vector<int> idle_row_;     ///< row of each slack movable edge (not banded), -1 otherwise
+  std::vector<int> layout_;       ///< this solve's vertex rows, then each edge's (sameLayoutAsLast)
+  std::vector<int> last_layout_;  ///< the last general-path solve's
+  bool last_contact_free_ = false;  ///< the last general-path solve had no contacts
   const std::vector<std::uint8_t>* movable_ = nullptr;  ///< the movable edges of this apply
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> matrix_;
