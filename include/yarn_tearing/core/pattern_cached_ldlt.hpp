@@ -10,14 +10,14 @@ namespace yarn_tearing {
 
 /// A sparse LDL^T of a symmetric matrix given as a list of entries (both triangles listed, the
 /// lower one read; duplicates summed), with an AMD fill-reducing ordering (a SparseLdlt
-/// underneath). The symbolic part (the permuted upper
-/// triangle's pattern, where each entry lands in it, the elimination tree and column counts) is
-/// kept while the entries fall within the analysed pattern: their values are then scattered
-/// straight into the permuted matrix and only the numeric factorization runs (no triplet sort, no
-/// compression, no permuted copy per factorization). An entry outside it brings a new analysis,
-/// which keeps the last ordering (a set of taut edges that changes a little from step to step, as a
-/// hanging fabric's slack weft does, hardly changes the fill) until the factor's fill per matrix
-/// entry has grown by kMostFillGrowth since the last AMD ordering; a new size always reorders.
+/// underneath). The symbolic part (the permuted upper triangle's pattern, where each entry lands
+/// in it, the elimination tree and column counts) is kept while the entries fall within the
+/// analysed pattern: their values are then scattered straight into the permuted matrix and only
+/// the numeric factorization runs (no triplet sort, no compression, no permuted copy per
+/// factorization). An entry outside it brings a new analysis, which keeps the last ordering
+/// (a set of taut edges that changes a little from step to step, as a hanging fabric's slack
+/// weft does, hardly changes the fill) until the factor's fill per matrix entry has grown by
+/// kMostFillGrowth since the last AMD ordering; a new size always reorders.
 ///
 /// With leaveOutZeros(), entries whose value is exactly zero (and that are not on the diagonal)
 /// are left out of the factorization: the listed pattern still fixes the ordering and the

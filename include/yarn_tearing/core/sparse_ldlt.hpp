@@ -45,7 +45,8 @@ class SparseLdlt {
   static constexpr double kSimplicialCost = 2e6;
 
  private:
-  /// Eigen's simplicial LDL^T, which tells its analysis's cost.
+  /// Eigen's simplicial LDL^T, which tells its analysis's cost from the column counts its
+  /// analysis keeps (SimplicialCholeskyBase's protected m_nonZerosPerCol, Eigen 3.3 and 3.4).
   class SimplicialLdlt : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper,
                                                       Eigen::NaturalOrdering<int>> {
    public:
