@@ -222,5 +222,21 @@ TEST(SparseLdlt, ChoosesTheSupernodalKernelForDenseFrontsOnly) {
   }
 }
 
+TEST(SparseLdlt, HandsBackToTheSimplicialKernelOnlyBelowItsLowerCost) {
+  // A 40 x 40 grid takes the supernodal kernel; a 8 x 8 one, far below kSimplicialCost, hands it
+  // back, and a 40 x 40 one takes it again; each solved within the simplicial kernel's error.
+  SparseLdlt ldlt;
+  for (const int side : {40, 8, 40}) {
+    const Eigen::SparseMatrix<double> upper = orderedUpper(gridSystem(side, 1.0));
+    ASSERT_TRUE(ldlt.analyzePattern(upper));
+    EXPECT_EQ(ldlt.supernodal(), side == 40);
+    ASSERT_TRUE(ldlt.factorize(upper));
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(upper.rows(), 2.0, -1.0);
+    Eigen::VectorXd x = b;
+    ldlt.solveInPlace(x);
+    EXPECT_LT(backwardError(upper, x, b), kSameRoundOff * simplicialBackwardError(upper, b));
+  }
+}
+
 }  // namespace
 }  // namespace yarn_tearing::test

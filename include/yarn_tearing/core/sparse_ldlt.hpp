@@ -18,7 +18,7 @@ namespace yarn_tearing {
 /// used from then on.
 ///
 /// Measured on dumped Newton-step systems of the trouser tear (factorization, analysis, one
-/// solve; 2-core Intel Xeon, GCC 12 -O3): 64 x 64 (19,827 rows, cost 1.6e7) supernodal 3.2, 2.3,
+/// solve; 2-core AMD EPYC, GCC 12 -O3): 64 x 64 (19,827 rows, cost 1.6e7) supernodal 3.2, 2.3,
 /// 0.43 ms against simplicial 5.5, 1.4, 0.39 ms; 32 x 32 (4,795 rows, cost 1.2e6) 0.58, 0.65,
 /// 0.096 ms against 0.65, 0.31, 0.077 ms; the hanging 64 x 64 fabric's edge Gram matrix (8,064
 /// rows, cost 9e5) 0.29, 0.42, 0.084 ms against 0.25, 0.17, 0.066 ms.
