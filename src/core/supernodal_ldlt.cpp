@@ -157,8 +157,6 @@ void SupernodalLdlt::columnCounts() {
   for (int j = 0; j < n; ++j) {
     if (parent_[j] != -1) count_[parent_[j]] += count_[j];
   }
-  factor_nonzeros_ = 0;
-  for (int j = 0; j < n; ++j) factor_nonzeros_ += count_[j] - 1;
 }
 
 void SupernodalLdlt::renumber(const std::vector<int>& order) {
@@ -297,8 +295,12 @@ bool SupernodalLdlt::analyzeCounts(const Eigen::SparseMatrix<double>& upper) {
   renumber(order_);
   buildLowerPattern(upper);
   columnCounts();
+  factor_nonzeros_ = 0;
   cost_ = 0.0;
-  for (const int count : count_) cost_ += static_cast<double>(count - 1) * (count - 1);
+  for (const int count : count_) {
+    factor_nonzeros_ += count - 1;
+    cost_ += static_cast<double>(count - 1) * (count - 1);
+  }
   return true;
 }
 

@@ -102,20 +102,19 @@ class SupernodalLdlt {
   std::vector<int> max_first_;         ///< per row: largest first_descendant_ of its leaves yet
   std::vector<int> previous_leaf_;     ///< per row: the last leaf of its subtree found
   std::vector<int> order_;             ///< the postorder: order_[k] is the column numbered k
+  // Work arrays each phase of the analysis reuses for its own (named where it takes them).
   std::vector<int> scratch_a_;
   std::vector<int> scratch_b_;
   std::vector<int> scratch_c_;
   std::vector<int> scratch_d_;
   // Scratch of factorize().
-  std::vector<int> local_row_;    ///< row -> its index in the supernode being factorized
-  std::vector<int> next_update_;  ///< per supernode: its next row that updates a later one
-  std::vector<int> update_list_;  ///< per supernode: first supernode waiting to update it
-  std::vector<int> update_next_;  ///< per supernode: next one in the same waiting list
-  std::vector<double> product_;   ///< an update's dense product
-  std::vector<double> scaled_;    ///< an update's rows scaled by D
-  mutable std::vector<double> gathered_;
-  mutable Eigen::VectorXd permuted_;  ///< the right-hand side renumbered (solve)  ///< a
-                                      ///< supernode's rows of a right-hand side (solve)
+  std::vector<int> local_row_;        ///< row -> its index in the supernode being factorized
+  std::vector<int> next_update_;      ///< per supernode: its next row that updates a later one
+  std::vector<int> update_list_;      ///< per supernode: first supernode waiting to update it
+  std::vector<int> update_next_;      ///< per supernode: next one in the same waiting list
+  std::vector<double> product_;       ///< an update's dense product
+  std::vector<double> scaled_;        ///< an update's rows scaled by D
+  mutable Eigen::VectorXd permuted_;  ///< the right-hand side renumbered (solve)
 };
 
 }  // namespace yarn_tearing
