@@ -14,7 +14,7 @@
 
 #include <cmath>
 
-#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
 
 namespace yarn_tearing {
 namespace {

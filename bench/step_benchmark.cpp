@@ -6,12 +6,12 @@
 
 #include <cmath>
 
-#include "yarn_tearing/core/explicit_forces.hpp"
-#include "yarn_tearing/core/length_constraint_projection.hpp"
-#include "yarn_tearing/core/material_response.hpp"
-#include "yarn_tearing/core/simulator.hpp"
-#include "yarn_tearing/core/tearing.hpp"
-#include "yarn_tearing/core/tension_estimator.hpp"
+#include "yarn_tearing/core/forces/explicit_forces.hpp"
+#include "yarn_tearing/core/material/material_response.hpp"
+#include "yarn_tearing/core/projection/length_constraint_projection.hpp"
+#include "yarn_tearing/core/projection/tension_estimator.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
+#include "yarn_tearing/core/tearing/tearing.hpp"
 
 namespace yarn_tearing {
 namespace {

@@ -56,7 +56,7 @@ for file in lib/libyarn_tearing_core.so lib/libyarn_tearing_ros.so \
   lib/yarn_tearing/yarn_tearing_node lib/yarn_tearing/plot_bag \
   lib/yarn_tearing/yarn_plotting/__init__.py lib/yarn_tearing/force_ramp \
   lib/yarn_tearing/tensile_test lib/yarn_tearing/tensile_pull \
-  include/yarn_tearing/core/simulator.hpp include/yarn_tearing/BreakEvent.h \
+  include/yarn_tearing/core/simulation/simulator.hpp include/yarn_tearing/BreakEvent.h \
   share/yarn_tearing/package.xml share/yarn_tearing/launch/demo.launch \
   share/yarn_tearing/config/default.yaml share/yarn_tearing/config/rviz/demo.rviz \
   share/yarn_tearing/cmake/yarn_tearingConfig.cmake; do

@@ -10,7 +10,7 @@
 #include <exception>
 #include <vector>
 
-#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
 #include "yarn_tearing/ros/node_runner.hpp"
 #include "yarn_tearing/ros/simulation_config.hpp"
 

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "yarn_tearing/core/rate_dependence.hpp"
+#include "yarn_tearing/core/material/rate_dependence.hpp"
 #include "yarn_tearing/ros/parameter_bounds.hpp"
 #include "yarn_tearing/ros/parameter_error.hpp"
 

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "yarn_tearing/core/scene.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
 #include "yarn_tearing/ros/fabric_spec_loader.hpp"
 #include "yarn_tearing/ros/param_value.hpp"
 #include "yarn_tearing/ros/parameter_bounds.hpp"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "yarn_tearing/core/tensile_pull.hpp"
+#include "yarn_tearing/core/lab/tensile_pull.hpp"
 
 namespace {
 

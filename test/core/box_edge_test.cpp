@@ -12,7 +12,7 @@
 #include <string>
 
 #include "contact_test_support.hpp"
-#include "yarn_tearing/core/edge_rounding.hpp"
+#include "yarn_tearing/core/contact/edge_rounding.hpp"
 
 namespace yarn_tearing::test {
 namespace {

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "test_support.hpp"
-#include "yarn_tearing/core/edge_gram_solver.hpp"
+#include "yarn_tearing/core/projection/edge_gram_solver.hpp"
 
 namespace yarn_tearing::test {
 namespace {

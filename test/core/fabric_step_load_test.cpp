@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "fabric_support.hpp"
-#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
 
 namespace yarn_tearing::test {
 namespace {

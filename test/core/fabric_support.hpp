@@ -1,7 +1,7 @@
 #pragma once
 
 #include "test_support.hpp"
-#include "yarn_tearing/core/fabric_spec.hpp"
+#include "yarn_tearing/core/model/fabric_spec.hpp"
 
 namespace yarn_tearing::test {
 

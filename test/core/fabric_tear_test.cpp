@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "fabric_support.hpp"
-#include "yarn_tearing/core/trouser_tear.hpp"
+#include "yarn_tearing/core/lab/trouser_tear.hpp"
 
 namespace yarn_tearing::test {
 namespace {

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "test_support.hpp"
-#include "yarn_tearing/core/strength_scatter.hpp"
-#include "yarn_tearing/core/tensile_pull.hpp"
+#include "yarn_tearing/core/lab/tensile_pull.hpp"
+#include "yarn_tearing/core/material/strength_scatter.hpp"
 
 namespace yarn_tearing::test {
 namespace {

@@ -1,7 +1,7 @@
 // PatternCachedLdlt leaving stored zeros out of the factorization (leaveOutZeros()): the same
 // solution as with them, a factor without their fill, and a new analysis only when a nonzero
 // falls outside the analysed one.
-#include "yarn_tearing/core/pattern_cached_ldlt.hpp"
+#include "yarn_tearing/core/linalg/pattern_cached_ldlt.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // length per minute); at other rates its stresses scale by 1 + k log10(rate / reference), bounded
 // at the ends of the measured range. A yarn drawn at constant speed over four decades of rate
 // breaks at that factor times sigma_b pi r^2.
-#include "yarn_tearing/core/rate_dependence.hpp"
+#include "yarn_tearing/core/material/rate_dependence.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "test_support.hpp"
-#include "yarn_tearing/core/stiff_reference_yarn.hpp"
+#include "yarn_tearing/core/lab/stiff_reference_yarn.hpp"
 
 namespace yarn_tearing::test {
 namespace {

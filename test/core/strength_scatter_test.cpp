@@ -1,5 +1,5 @@
 // Strength scatter given as a coefficient of variation, as yarn strength is usually reported.
-#include "yarn_tearing/core/strength_scatter.hpp"
+#include "yarn_tearing/core/material/strength_scatter.hpp"
 
 #include <gtest/gtest.h>
 

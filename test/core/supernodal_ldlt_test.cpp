@@ -2,7 +2,7 @@
 // quasi-definite systems shaped like the Newton step's (a grid of vertex blocks joined by edge
 // rows), a diagonal missing from the pattern, the same factor's nonzeros, a refactorization with
 // new values, and a zero pivot.
-#include "yarn_tearing/core/supernodal_ldlt.hpp"
+#include "yarn_tearing/core/linalg/supernodal_ldlt.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <Eigen/SparseCholesky>
 #include <cmath>
 
-#include "yarn_tearing/core/sparse_ldlt.hpp"
+#include "yarn_tearing/core/linalg/sparse_ldlt.hpp"
 
 namespace yarn_tearing::test {
 namespace {

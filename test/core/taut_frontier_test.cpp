@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-#include "yarn_tearing/core/length_constraint_projection.hpp"
+#include "yarn_tearing/core/projection/length_constraint_projection.hpp"
 
 namespace yarn_tearing::test {
 namespace {

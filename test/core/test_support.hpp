@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
 
 namespace yarn_tearing::test {
 

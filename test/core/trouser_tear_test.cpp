@@ -3,7 +3,7 @@
 // strength of the single yarns that break, so doubling the weft yarn's breaking force (a yarn of
 // twice the cross-section) doubles the mean tear force, within the spread of the peaks; and it
 // rises with the number of yarns sharing the load at the tear's tip (more picks per length).
-#include "yarn_tearing/core/trouser_tear.hpp"
+#include "yarn_tearing/core/lab/trouser_tear.hpp"
 
 #include <gtest/gtest.h>
 

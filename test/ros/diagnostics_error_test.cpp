@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "yarn_tearing/core/scene.hpp"
-#include "yarn_tearing/core/step_health.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
+#include "yarn_tearing/core/simulation/step_health.hpp"
 #include "yarn_tearing/ros/simulation_diagnostics.hpp"
 
 namespace yarn_tearing {

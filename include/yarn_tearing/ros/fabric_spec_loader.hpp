@@ -1,6 +1,6 @@
 #pragma once
 
-#include "yarn_tearing/core/fabric_spec.hpp"
+#include "yarn_tearing/core/model/fabric_spec.hpp"
 #include "yarn_tearing/ros/param_value.hpp"
 
 namespace yarn_tearing {

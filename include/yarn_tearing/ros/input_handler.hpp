@@ -7,7 +7,7 @@
 
 #include "yarn_tearing/AppliedForce.h"
 #include "yarn_tearing/Grasp.h"
-#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
 #include "yarn_tearing/ros/frame_transformer.hpp"
 #include "yarn_tearing/ros/input_rejected.hpp"
 #include "yarn_tearing/ros/warning_throttle.hpp"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "yarn_tearing/core/scene.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {

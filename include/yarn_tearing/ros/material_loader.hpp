@@ -1,6 +1,6 @@
 #pragma once
 
-#include "yarn_tearing/core/material.hpp"
+#include "yarn_tearing/core/material/material.hpp"
 #include "yarn_tearing/ros/param_value.hpp"
 
 namespace yarn_tearing {

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "yarn_tearing/core/scene.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {

@@ -7,9 +7,9 @@
 
 #include "yarn_tearing/FabricStateArray.h"
 #include "yarn_tearing/YarnStateArray.h"
-#include "yarn_tearing/core/scene.hpp"
-#include "yarn_tearing/core/simulator.hpp"
-#include "yarn_tearing/core/tear_event.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
+#include "yarn_tearing/core/tearing/tear_event.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "yarn_tearing/core/obstacle.hpp"
-#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/core/contact/obstacle.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {

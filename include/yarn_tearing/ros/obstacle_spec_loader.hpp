@@ -3,7 +3,7 @@
 #include <Eigen/Geometry>
 #include <string>
 
-#include "yarn_tearing/core/obstacle.hpp"
+#include "yarn_tearing/core/contact/obstacle.hpp"
 #include "yarn_tearing/ros/param_value.hpp"
 
 namespace yarn_tearing {

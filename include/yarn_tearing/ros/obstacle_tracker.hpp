@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
 #include "yarn_tearing/ros/frame_transformer.hpp"
 #include "yarn_tearing/ros/input_rejected.hpp"
 #include "yarn_tearing/ros/obstacle_spec_loader.hpp"

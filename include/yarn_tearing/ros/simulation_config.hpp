@@ -4,9 +4,9 @@
 
 #include <vector>
 
-#include "yarn_tearing/core/fabric_spec.hpp"
-#include "yarn_tearing/core/simulation_parameters.hpp"
-#include "yarn_tearing/core/yarn_spec.hpp"
+#include "yarn_tearing/core/model/fabric_spec.hpp"
+#include "yarn_tearing/core/model/yarn_spec.hpp"
+#include "yarn_tearing/core/simulation/simulation_parameters.hpp"
 #include "yarn_tearing/ros/node_settings.hpp"
 #include "yarn_tearing/ros/obstacle_spec_loader.hpp"
 

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <string>
 
-#include "yarn_tearing/core/scene.hpp"
-#include "yarn_tearing/core/step_health.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
+#include "yarn_tearing/core/simulation/step_health.hpp"
 #include "yarn_tearing/ros/rate_schedule.hpp"
 
 namespace yarn_tearing {

@@ -8,7 +8,7 @@
 #include <set>
 #include <string>
 
-#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
 #include "yarn_tearing/ros/wrench_topics.hpp"
 
 namespace yarn_tearing {

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string>
 
-#include "yarn_tearing/core/scene.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {

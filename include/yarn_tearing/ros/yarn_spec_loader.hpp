@@ -1,6 +1,6 @@
 #pragma once
 
-#include "yarn_tearing/core/yarn_spec.hpp"
+#include "yarn_tearing/core/model/yarn_spec.hpp"
 #include "yarn_tearing/ros/param_value.hpp"
 
 namespace yarn_tearing {

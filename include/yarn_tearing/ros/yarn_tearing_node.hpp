@@ -16,7 +16,7 @@
 #include "yarn_tearing/GetBreakEvents.h"
 #include "yarn_tearing/Grasp.h"
 #include "yarn_tearing/YarnTearingConfig.h"
-#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
 #include "yarn_tearing/ros/break_event_log.hpp"
 #include "yarn_tearing/ros/frame_transformer.hpp"
 #include "yarn_tearing/ros/input_handler.hpp"

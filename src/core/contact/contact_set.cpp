@@ -1,10 +1,10 @@
-#include "yarn_tearing/core/contact_set.hpp"
+#include "yarn_tearing/core/contact/contact_set.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <tuple>
 
-#include "yarn_tearing/core/edge_rounding.hpp"
+#include "yarn_tearing/core/contact/edge_rounding.hpp"
 
 namespace yarn_tearing {
 namespace {

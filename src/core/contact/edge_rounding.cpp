@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/edge_rounding.hpp"
+#include "yarn_tearing/core/contact/edge_rounding.hpp"
 
 #include <algorithm>
 

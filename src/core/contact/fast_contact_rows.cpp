@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/fast_contact_rows.hpp"
+#include "yarn_tearing/core/contact/fast_contact_rows.hpp"
 
 #include <Eigen/Cholesky>
 #include <algorithm>

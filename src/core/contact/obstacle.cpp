@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/obstacle.hpp"
+#include "yarn_tearing/core/contact/obstacle.hpp"
 
 #include <algorithm>
 #include <cmath>

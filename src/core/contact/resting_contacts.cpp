@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/resting_contacts.hpp"
+#include "yarn_tearing/core/contact/resting_contacts.hpp"
 
 #include <cmath>
 

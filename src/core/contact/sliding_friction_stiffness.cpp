@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/sliding_friction_stiffness.hpp"
+#include "yarn_tearing/core/contact/sliding_friction_stiffness.hpp"
 
 namespace yarn_tearing {
 namespace {

@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/explicit_forces.hpp"
+#include "yarn_tearing/core/forces/explicit_forces.hpp"
 
 namespace yarn_tearing {
 

@@ -1,8 +1,8 @@
-#include "yarn_tearing/core/fabric_shear.hpp"
+#include "yarn_tearing/core/forces/fabric_shear.hpp"
 
 #include <algorithm>
 
-#include "yarn_tearing/core/edge_stretch_limits.hpp"
+#include "yarn_tearing/core/projection/edge_stretch_limits.hpp"
 
 namespace yarn_tearing {
 namespace {

@@ -1,9 +1,9 @@
-#include "yarn_tearing/core/stiff_reference_yarn.hpp"
+#include "yarn_tearing/core/lab/stiff_reference_yarn.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "yarn_tearing/core/scene.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
 
 namespace yarn_tearing {
 

@@ -1,9 +1,9 @@
-#include "yarn_tearing/core/tensile_pull.hpp"
+#include "yarn_tearing/core/lab/tensile_pull.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
 
 namespace yarn_tearing {
 

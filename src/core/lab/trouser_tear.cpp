@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/trouser_tear.hpp"
+#include "yarn_tearing/core/lab/trouser_tear.hpp"
 
 #include <algorithm>
 #include <cmath>

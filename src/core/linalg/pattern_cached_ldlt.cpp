@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/pattern_cached_ldlt.hpp"
+#include "yarn_tearing/core/linalg/pattern_cached_ldlt.hpp"
 
 #include <Eigen/OrderingMethods>
 #include <algorithm>

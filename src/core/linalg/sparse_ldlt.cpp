@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/sparse_ldlt.hpp"
+#include "yarn_tearing/core/linalg/sparse_ldlt.hpp"
 
 namespace yarn_tearing {
 

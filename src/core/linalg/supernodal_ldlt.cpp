@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/supernodal_ldlt.hpp"
+#include "yarn_tearing/core/linalg/supernodal_ldlt.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>

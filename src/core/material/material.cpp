@@ -1,9 +1,9 @@
-#include "yarn_tearing/core/material.hpp"
+#include "yarn_tearing/core/material/material.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "yarn_tearing/core/rate_dependence.hpp"
+#include "yarn_tearing/core/material/rate_dependence.hpp"
 
 namespace yarn_tearing {
 

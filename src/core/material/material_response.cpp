@@ -1,8 +1,8 @@
-#include "yarn_tearing/core/material_response.hpp"
+#include "yarn_tearing/core/material/material_response.hpp"
 
 #include <algorithm>
 
-#include "yarn_tearing/core/rate_dependence.hpp"
+#include "yarn_tearing/core/material/rate_dependence.hpp"
 
 namespace yarn_tearing {
 namespace {

@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/rate_dependence.hpp"
+#include "yarn_tearing/core/material/rate_dependence.hpp"
 
 #include <algorithm>
 #include <cmath>

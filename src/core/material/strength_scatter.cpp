@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/strength_scatter.hpp"
+#include "yarn_tearing/core/material/strength_scatter.hpp"
 
 #include <cmath>
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/stress_strain_curve.hpp"
+#include "yarn_tearing/core/material/stress_strain_curve.hpp"
 
 #include <algorithm>
 #include <cmath>

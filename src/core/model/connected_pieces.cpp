@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/connected_pieces.hpp"
+#include "yarn_tearing/core/model/connected_pieces.hpp"
 
 namespace yarn_tearing {
 

@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/edge_incidence.hpp"
+#include "yarn_tearing/core/model/edge_incidence.hpp"
 
 namespace yarn_tearing {
 

@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/edge_set.hpp"
+#include "yarn_tearing/core/model/edge_set.hpp"
 
 namespace yarn_tearing {
 

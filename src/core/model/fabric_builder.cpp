@@ -1,6 +1,6 @@
-#include "yarn_tearing/core/fabric_builder.hpp"
+#include "yarn_tearing/core/model/fabric_builder.hpp"
 
-#include "yarn_tearing/core/strength_scatter.hpp"
+#include "yarn_tearing/core/material/strength_scatter.hpp"
 
 namespace yarn_tearing {
 namespace {

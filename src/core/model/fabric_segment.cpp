@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/fabric_segment.hpp"
+#include "yarn_tearing/core/model/fabric_segment.hpp"
 
 namespace yarn_tearing {
 

@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/fabric_spec.hpp"
+#include "yarn_tearing/core/model/fabric_spec.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,11 +1,11 @@
-#include "yarn_tearing/core/scene.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
 
 #include <set>
 #include <stdexcept>
 #include <string>
 
-#include "yarn_tearing/core/fabric_builder.hpp"
-#include "yarn_tearing/core/strength_scatter.hpp"
+#include "yarn_tearing/core/material/strength_scatter.hpp"
+#include "yarn_tearing/core/model/fabric_builder.hpp"
 
 namespace yarn_tearing {
 namespace {

@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/vertex_set.hpp"
+#include "yarn_tearing/core/model/vertex_set.hpp"
 
 namespace yarn_tearing {
 

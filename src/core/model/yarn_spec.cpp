@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/yarn_spec.hpp"
+#include "yarn_tearing/core/model/yarn_spec.hpp"
 
 #include <cmath>
 #include <stdexcept>

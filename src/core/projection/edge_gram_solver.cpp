@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/edge_gram_solver.hpp"
+#include "yarn_tearing/core/projection/edge_gram_solver.hpp"
 
 namespace yarn_tearing {
 namespace {

@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/edge_stretch_limits.hpp"
+#include "yarn_tearing/core/projection/edge_stretch_limits.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/length_constraint_projection.hpp"
+#include "yarn_tearing/core/projection/length_constraint_projection.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
-#include "yarn_tearing/core/stiff_newton_step.hpp"
+#include "yarn_tearing/core/projection/stiff_newton_step.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "yarn_tearing/core/sliding_friction_stiffness.hpp"
+#include "yarn_tearing/core/contact/sliding_friction_stiffness.hpp"
 
 namespace yarn_tearing {
 namespace {

@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/taut_frontier.hpp"
+#include "yarn_tearing/core/projection/taut_frontier.hpp"
 
 #include <algorithm>
 

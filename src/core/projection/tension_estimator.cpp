@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/tension_estimator.hpp"
+#include "yarn_tearing/core/projection/tension_estimator.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/nonfinite_recovery.hpp"
+#include "yarn_tearing/core/simulation/nonfinite_recovery.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/simulation_parameters.hpp"
+#include "yarn_tearing/core/simulation/simulation_parameters.hpp"
 
 #include <cmath>
 #include <stdexcept>

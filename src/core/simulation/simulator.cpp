@@ -1,15 +1,15 @@
-#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
-#include "yarn_tearing/core/explicit_forces.hpp"
-#include "yarn_tearing/core/fabric_shear.hpp"
-#include "yarn_tearing/core/material_response.hpp"
-#include "yarn_tearing/core/nonfinite_recovery.hpp"
-#include "yarn_tearing/core/strength_scatter.hpp"
+#include "yarn_tearing/core/forces/explicit_forces.hpp"
+#include "yarn_tearing/core/forces/fabric_shear.hpp"
+#include "yarn_tearing/core/material/material_response.hpp"
+#include "yarn_tearing/core/material/strength_scatter.hpp"
+#include "yarn_tearing/core/simulation/nonfinite_recovery.hpp"
 
 namespace yarn_tearing {
 namespace {

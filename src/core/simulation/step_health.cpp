@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/step_health.hpp"
+#include "yarn_tearing/core/simulation/step_health.hpp"
 
 #include <algorithm>
 

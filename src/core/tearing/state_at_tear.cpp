@@ -1,4 +1,4 @@
-#include "yarn_tearing/core/state_at_tear.hpp"
+#include "yarn_tearing/core/tearing/state_at_tear.hpp"
 
 #include <algorithm>
 

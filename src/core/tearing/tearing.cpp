@@ -1,10 +1,10 @@
-#include "yarn_tearing/core/tearing.hpp"
+#include "yarn_tearing/core/tearing/tearing.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "yarn_tearing/core/state_at_tear.hpp"
+#include "yarn_tearing/core/tearing/state_at_tear.hpp"
 
 namespace yarn_tearing {
 namespace {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
 #include "yarn_tearing/ros/marker_builder.hpp"
 #include "yarn_tearing/ros/materials_description.hpp"
 #include "yarn_tearing/ros/message_conversion.hpp"

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "yarn_tearing/core/edge_set.hpp"
-#include "yarn_tearing/core/obstacle.hpp"
+#include "yarn_tearing/core/contact/obstacle.hpp"
+#include "yarn_tearing/core/model/edge_set.hpp"
 
 namespace yarn_tearing {
 

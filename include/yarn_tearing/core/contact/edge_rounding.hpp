@@ -1,6 +1,6 @@
 #pragma once
 
-#include "yarn_tearing/core/obstacle.hpp"
+#include "yarn_tearing/core/contact/obstacle.hpp"
 
 namespace yarn_tearing {
 

@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "yarn_tearing/core/contact_set.hpp"
-#include "yarn_tearing/core/edge_gram_solver.hpp"
-#include "yarn_tearing/core/edge_set.hpp"
+#include "yarn_tearing/core/contact/contact_set.hpp"
+#include "yarn_tearing/core/model/edge_set.hpp"
+#include "yarn_tearing/core/projection/edge_gram_solver.hpp"
 
 namespace yarn_tearing {
 

@@ -3,7 +3,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "yarn_tearing/core/contact_set.hpp"
+#include "yarn_tearing/core/contact/contact_set.hpp"
 
 namespace yarn_tearing {
 

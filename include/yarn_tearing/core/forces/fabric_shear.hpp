@@ -3,8 +3,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "yarn_tearing/core/scene.hpp"
-#include "yarn_tearing/core/simulation_parameters.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
+#include "yarn_tearing/core/simulation/simulation_parameters.hpp"
 
 namespace yarn_tearing {
 

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "yarn_tearing/core/yarn_spec.hpp"
+#include "yarn_tearing/core/model/yarn_spec.hpp"
 
 namespace yarn_tearing {
 

@@ -4,10 +4,10 @@
 #include <functional>
 #include <vector>
 
-#include "yarn_tearing/core/fabric_spec.hpp"
-#include "yarn_tearing/core/simulation_parameters.hpp"
-#include "yarn_tearing/core/simulator.hpp"
-#include "yarn_tearing/core/tear_event.hpp"
+#include "yarn_tearing/core/model/fabric_spec.hpp"
+#include "yarn_tearing/core/simulation/simulation_parameters.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
+#include "yarn_tearing/core/tearing/tear_event.hpp"
 
 namespace yarn_tearing {
 

@@ -4,7 +4,7 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
-#include "yarn_tearing/core/sparse_ldlt.hpp"
+#include "yarn_tearing/core/linalg/sparse_ldlt.hpp"
 
 namespace yarn_tearing {
 

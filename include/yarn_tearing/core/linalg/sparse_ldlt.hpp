@@ -4,7 +4,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
-#include "yarn_tearing/core/supernodal_ldlt.hpp"
+#include "yarn_tearing/core/linalg/supernodal_ldlt.hpp"
 
 namespace yarn_tearing {
 

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "yarn_tearing/core/stress_strain_curve.hpp"
+#include "yarn_tearing/core/material/stress_strain_curve.hpp"
 
 namespace yarn_tearing {
 

@@ -3,8 +3,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "yarn_tearing/core/edge_set.hpp"
-#include "yarn_tearing/core/yarn.hpp"
+#include "yarn_tearing/core/model/edge_set.hpp"
+#include "yarn_tearing/core/model/yarn.hpp"
 
 namespace yarn_tearing {
 

@@ -3,9 +3,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "yarn_tearing/core/edge_set.hpp"
-#include "yarn_tearing/core/yarn.hpp"
-#include "yarn_tearing/core/yarn_spec.hpp"
+#include "yarn_tearing/core/model/edge_set.hpp"
+#include "yarn_tearing/core/model/yarn.hpp"
+#include "yarn_tearing/core/model/yarn_spec.hpp"
 
 namespace yarn_tearing {
 

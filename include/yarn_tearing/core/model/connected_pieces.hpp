@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "yarn_tearing/core/edge_set.hpp"
+#include "yarn_tearing/core/model/edge_set.hpp"
 
 namespace yarn_tearing {
 

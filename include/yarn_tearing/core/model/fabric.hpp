@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "yarn_tearing/core/fabric_segment.hpp"
+#include "yarn_tearing/core/model/fabric_segment.hpp"
 
 namespace yarn_tearing {
 

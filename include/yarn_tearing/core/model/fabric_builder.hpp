@@ -1,7 +1,7 @@
 #pragma once
 
-#include "yarn_tearing/core/fabric_spec.hpp"
-#include "yarn_tearing/core/scene.hpp"
+#include "yarn_tearing/core/model/fabric_spec.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
 
 namespace yarn_tearing {
 

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "yarn_tearing/core/fabric_segment.hpp"
-#include "yarn_tearing/core/yarn_spec.hpp"
+#include "yarn_tearing/core/model/fabric_segment.hpp"
+#include "yarn_tearing/core/model/yarn_spec.hpp"
 
 namespace yarn_tearing {
 

@@ -2,12 +2,12 @@
 
 #include <vector>
 
-#include "yarn_tearing/core/edge_set.hpp"
-#include "yarn_tearing/core/fabric.hpp"
-#include "yarn_tearing/core/fabric_spec.hpp"
-#include "yarn_tearing/core/vertex_set.hpp"
-#include "yarn_tearing/core/yarn.hpp"
-#include "yarn_tearing/core/yarn_spec.hpp"
+#include "yarn_tearing/core/model/edge_set.hpp"
+#include "yarn_tearing/core/model/fabric.hpp"
+#include "yarn_tearing/core/model/fabric_spec.hpp"
+#include "yarn_tearing/core/model/vertex_set.hpp"
+#include "yarn_tearing/core/model/yarn.hpp"
+#include "yarn_tearing/core/model/yarn_spec.hpp"
 
 namespace yarn_tearing {
 

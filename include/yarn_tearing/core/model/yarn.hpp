@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <string>
 
-#include "yarn_tearing/core/fabric_segment.hpp"
-#include "yarn_tearing/core/material.hpp"
+#include "yarn_tearing/core/material/material.hpp"
+#include "yarn_tearing/core/model/fabric_segment.hpp"
 
 namespace yarn_tearing {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "yarn_tearing/core/material.hpp"
+#include "yarn_tearing/core/material/material.hpp"
 
 namespace yarn_tearing {
 

@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "yarn_tearing/core/edge_incidence.hpp"
-#include "yarn_tearing/core/edge_set.hpp"
-#include "yarn_tearing/core/pattern_cached_ldlt.hpp"
+#include "yarn_tearing/core/linalg/pattern_cached_ldlt.hpp"
+#include "yarn_tearing/core/model/edge_incidence.hpp"
+#include "yarn_tearing/core/model/edge_set.hpp"
 
 namespace yarn_tearing {
 

@@ -2,8 +2,8 @@
 
 #include <vector>
 
-#include "yarn_tearing/core/scene.hpp"
-#include "yarn_tearing/core/simulation_parameters.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
+#include "yarn_tearing/core/simulation/simulation_parameters.hpp"
 
 namespace yarn_tearing {
 

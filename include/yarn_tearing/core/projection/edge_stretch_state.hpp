@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "yarn_tearing/core/edge_set.hpp"
-#include "yarn_tearing/core/edge_stretch_limits.hpp"
+#include "yarn_tearing/core/model/edge_set.hpp"
+#include "yarn_tearing/core/projection/edge_stretch_limits.hpp"
 
 namespace yarn_tearing {
 

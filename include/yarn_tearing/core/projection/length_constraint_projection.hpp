@@ -4,18 +4,18 @@
 #include <cstdint>
 #include <vector>
 
-#include "yarn_tearing/core/connected_pieces.hpp"
-#include "yarn_tearing/core/contact_set.hpp"
-#include "yarn_tearing/core/edge_gram_solver.hpp"
-#include "yarn_tearing/core/edge_set.hpp"
-#include "yarn_tearing/core/edge_stretch_limits.hpp"
-#include "yarn_tearing/core/edge_stretch_state.hpp"
-#include "yarn_tearing/core/fast_contact_rows.hpp"
-#include "yarn_tearing/core/resting_contacts.hpp"
-#include "yarn_tearing/core/simulation_parameters.hpp"
-#include "yarn_tearing/core/stiff_newton_step.hpp"
-#include "yarn_tearing/core/taut_frontier.hpp"
-#include "yarn_tearing/core/vertex_set.hpp"
+#include "yarn_tearing/core/contact/contact_set.hpp"
+#include "yarn_tearing/core/contact/fast_contact_rows.hpp"
+#include "yarn_tearing/core/contact/resting_contacts.hpp"
+#include "yarn_tearing/core/model/connected_pieces.hpp"
+#include "yarn_tearing/core/model/edge_set.hpp"
+#include "yarn_tearing/core/model/vertex_set.hpp"
+#include "yarn_tearing/core/projection/edge_gram_solver.hpp"
+#include "yarn_tearing/core/projection/edge_stretch_limits.hpp"
+#include "yarn_tearing/core/projection/edge_stretch_state.hpp"
+#include "yarn_tearing/core/projection/stiff_newton_step.hpp"
+#include "yarn_tearing/core/projection/taut_frontier.hpp"
+#include "yarn_tearing/core/simulation/simulation_parameters.hpp"
 
 namespace yarn_tearing {
 

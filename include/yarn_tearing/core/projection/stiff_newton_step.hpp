@@ -8,12 +8,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "yarn_tearing/core/contact_set.hpp"
-#include "yarn_tearing/core/edge_incidence.hpp"
-#include "yarn_tearing/core/edge_set.hpp"
-#include "yarn_tearing/core/edge_stretch_state.hpp"
-#include "yarn_tearing/core/pattern_cached_ldlt.hpp"
-#include "yarn_tearing/core/taut_frontier.hpp"
+#include "yarn_tearing/core/contact/contact_set.hpp"
+#include "yarn_tearing/core/linalg/pattern_cached_ldlt.hpp"
+#include "yarn_tearing/core/model/edge_incidence.hpp"
+#include "yarn_tearing/core/model/edge_set.hpp"
+#include "yarn_tearing/core/projection/edge_stretch_state.hpp"
+#include "yarn_tearing/core/projection/taut_frontier.hpp"
 
 namespace yarn_tearing {
 

@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "yarn_tearing/core/edge_incidence.hpp"
-#include "yarn_tearing/core/edge_set.hpp"
+#include "yarn_tearing/core/model/edge_incidence.hpp"
+#include "yarn_tearing/core/model/edge_set.hpp"
 
 namespace yarn_tearing {
 

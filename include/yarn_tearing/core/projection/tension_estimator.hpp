@@ -4,10 +4,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "yarn_tearing/core/edge_gram_solver.hpp"
-#include "yarn_tearing/core/edge_set.hpp"
-#include "yarn_tearing/core/simulation_parameters.hpp"
-#include "yarn_tearing/core/vertex_set.hpp"
+#include "yarn_tearing/core/model/edge_set.hpp"
+#include "yarn_tearing/core/model/vertex_set.hpp"
+#include "yarn_tearing/core/projection/edge_gram_solver.hpp"
+#include "yarn_tearing/core/simulation/simulation_parameters.hpp"
 
 namespace yarn_tearing {
 

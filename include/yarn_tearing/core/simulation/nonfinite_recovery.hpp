@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "yarn_tearing/core/scene.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
 
 namespace yarn_tearing {
 

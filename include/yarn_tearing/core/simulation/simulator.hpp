@@ -3,12 +3,12 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "yarn_tearing/core/obstacle.hpp"
-#include "yarn_tearing/core/scene.hpp"
-#include "yarn_tearing/core/simulation_parameters.hpp"
-#include "yarn_tearing/core/step_health.hpp"
-#include "yarn_tearing/core/step_workspace.hpp"
-#include "yarn_tearing/core/tear_event.hpp"
+#include "yarn_tearing/core/contact/obstacle.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
+#include "yarn_tearing/core/simulation/simulation_parameters.hpp"
+#include "yarn_tearing/core/simulation/step_health.hpp"
+#include "yarn_tearing/core/simulation/step_workspace.hpp"
+#include "yarn_tearing/core/tearing/tear_event.hpp"
 
 namespace yarn_tearing {
 

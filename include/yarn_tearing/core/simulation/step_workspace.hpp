@@ -3,12 +3,12 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "yarn_tearing/core/contact_set.hpp"
-#include "yarn_tearing/core/edge_gram_solver.hpp"
-#include "yarn_tearing/core/edge_stretch_limits.hpp"
-#include "yarn_tearing/core/length_constraint_projection.hpp"
-#include "yarn_tearing/core/tearing.hpp"
-#include "yarn_tearing/core/tension_estimator.hpp"
+#include "yarn_tearing/core/contact/contact_set.hpp"
+#include "yarn_tearing/core/projection/edge_gram_solver.hpp"
+#include "yarn_tearing/core/projection/edge_stretch_limits.hpp"
+#include "yarn_tearing/core/projection/length_constraint_projection.hpp"
+#include "yarn_tearing/core/projection/tension_estimator.hpp"
+#include "yarn_tearing/core/tearing/tearing.hpp"
 
 namespace yarn_tearing {
 

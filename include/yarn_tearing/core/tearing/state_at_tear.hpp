@@ -2,8 +2,8 @@
 
 #include <cstddef>
 
-#include "yarn_tearing/core/scene.hpp"
-#include "yarn_tearing/core/tear_event.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
+#include "yarn_tearing/core/tearing/tear_event.hpp"
 
 namespace yarn_tearing {
 

@@ -3,7 +3,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 
-#include "yarn_tearing/core/fabric_segment.hpp"
+#include "yarn_tearing/core/model/fabric_segment.hpp"
 
 namespace yarn_tearing {
 

@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "yarn_tearing/core/connected_pieces.hpp"
-#include "yarn_tearing/core/scene.hpp"
-#include "yarn_tearing/core/tear_event.hpp"
+#include "yarn_tearing/core/model/connected_pieces.hpp"
+#include "yarn_tearing/core/model/scene.hpp"
+#include "yarn_tearing/core/tearing/tear_event.hpp"
 
 namespace yarn_tearing {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "yarn_tearing/core/simulator.hpp"
+#include "yarn_tearing/core.hpp"
 
 int main() {
   yarn_tearing::YarnSpec yarn;  // defaults: 0.3 m, 25 vertices, r = 0.1 mm, cotton-like
