@@ -8,6 +8,7 @@
 #   5. tensile_test: a quick virtual tensile test of a few specimens (python unittest)
 #   6. catkin_lint of the package (tools/check_catkin_lint.sh)
 #   7. install space and downstream C++ use (tools/test_install.sh)
+# Ends with each stage's wall time and the ten slowest tests (tools/slowest_tests.py).
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -16,11 +17,14 @@ mkdir -p "${logs}"
 
 "${repo}/tools/install_deps.sh"
 
+stage_times=()
 run_logged() {
   local name="$1"
   shift
   echo "== ${name}"
+  local start="${SECONDS}"
   "$@" 2>&1 | tee "${logs}/${name}.log"
+  stage_times+=("${name} $((SECONDS - start)) s")
 }
 
 run_logged format "${repo}/tools/check_format.sh"
@@ -37,4 +41,6 @@ core_total=$(grep -ho "tests failed out of [0-9]*" "${logs}/core.log" | awk '{s 
 ros_total=$(grep -o "Summary: [0-9]* tests" "${logs}/ros.log" | tail -1 | awk '{print $2 + 0}')
 plot_total=$(grep -o "^Ran [0-9]* test" "${logs}/plot.log" | awk '{print $2 + 0}')
 tensile_total=$(grep -o "^Ran [0-9]* test" "${logs}/tensile.log" | awk '{print $2 + 0}')
+echo "stage times: ${stage_times[*]/%/,} total ${SECONDS} s"
+/usr/bin/python3 "${repo}/tools/slowest_tests.py" "${logs}" "${repo}/ws/build/test_results/yarn_tearing"
 echo "test: $((core_total + ros_total + plot_total + tensile_total)) passed, 0 failed"
