@@ -112,7 +112,7 @@ SimulationParameters loadPhysics(const PrivateParams& params) {
                                  {"least_squares", TensionSource::kLeastSquares}});
   });
   params.read("regularization", [&](const ParamValue& v) {
-    // [0, 1), as the core and the README say (number() checks a closed range)
+    // [0, 1), as the core and doc/node.md say (number() checks a closed range)
     const std::string allowed = "a finite number in [0, 1)";
     double regularization = 1.0;
     try {

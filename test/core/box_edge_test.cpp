@@ -1,4 +1,4 @@
-// A yarn over a box's sharp edge pulled down on both sides with different weights (issue 13): a
+// A yarn over a box's sharp edge pulled down on both sides with different weights: a
 // cube turned 45 degrees about y, the yarn over its top ridge with both tails 30 degrees below
 // horizontal (bend theta = 60 degrees). No gravity: each end carries its weight W as a point
 // mass W/g and a force W along its tail, so the closed forms are those of an Atwood machine

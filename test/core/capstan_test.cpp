@@ -104,8 +104,8 @@ class FrictionWrap : public ::testing::TestWithParam<FrictionCase> {
     }
   }
   /// Bends of the wrap with friction [rad]: a polygon of chords lets go below e^(mu theta) by
-  /// an amount that falls as the bend squared (README, departure 9: at 2 pi, mu = 0.3, 5.1 % at
-  /// 0.4 rad, 1.4 % at 0.2, 0.4 % at 0.1).
+  /// an amount that falls as the bend squared (doc/method.md, "Friction": at 2 pi, mu = 0.3, 5.1 %
+  /// at 0.4 rad, 1.4 % at 0.2, 0.4 % at 0.1).
   static constexpr double kFineBend = 0.2;
 };
 
@@ -175,7 +175,7 @@ TEST_P(FrictionHoldThenSlide, HoldsAt97AndSlidesAt103PercentOfTheCapstanLaw) {
   expectSlidesAt103Percent(pulled, c);
 }
 
-/// The six cases of issue 13 at time step `dt` [s].
+/// The six wraps (theta = pi/2, pi, 2 pi; mu = 0.1, 0.3) at time step `dt` [s].
 auto capstanCases(double dt) {
   return ::testing::Values(FrictionCase{kPi / 2.0, 0.1, dt}, FrictionCase{kPi / 2.0, 0.3, dt},
                            FrictionCase{kPi, 0.1, dt}, FrictionCase{kPi, 0.3, dt},

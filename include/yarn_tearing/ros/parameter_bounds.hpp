@@ -7,7 +7,7 @@
 namespace yarn_tearing {
 namespace ros_layer {
 
-/// Physical bounds on the node's parameters (README, "Bad input"): what the simulation can
+/// Physical bounds on the node's parameters (doc/node.md, "Bad input"): what the simulation can
 /// represent in double precision with room to spare. A parameter past one stops the node at start,
 /// naming the parameter and the bound.
 namespace parameter_bounds {

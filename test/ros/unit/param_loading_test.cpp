@@ -106,8 +106,8 @@ TEST(YarnSpecLoader, ErrorNamesParameterValueAndAllowedRange) {
   EXPECT_NE(error.find("in [1e-07, 1] [m]"), std::string::npos) << error;
 }
 
-/// The eight parameter values that passed validation and poisoned the state: each is
-/// refused naming its parameter and the bound.
+/// Eight parameter values inside the type's range but past the physical bounds, each of which
+/// would poison the state: each is refused naming its parameter and the bound.
 TEST(YarnSpecLoader, RefusesValuesPastThePhysicalBounds) {
   const std::vector<std::pair<std::string, XmlRpc::XmlRpcValue>> cases = {
       {"radius", 1.0e-200},
