@@ -5,9 +5,10 @@
 #   2. core GoogleTest suite, Release and AddressSanitizer + UndefinedBehaviorSanitizer
 #   3. catkin build, ROS-layer unit tests and rostests
 #   4. plot_bag tests (python unittest)
-#   5. tensile_test: a quick virtual tensile test of a few specimens (python unittest)
-#   6. catkin_lint of the package (tools/check_catkin_lint.sh)
-#   7. install space and downstream C++ use (tools/test_install.sh)
+#   5. the manual: links, anchors, length, no history (python unittest, test/docs)
+#   6. tensile_test: a quick virtual tensile test of a few specimens (python unittest)
+#   7. catkin_lint of the package (tools/check_catkin_lint.sh)
+#   8. install space and downstream C++ use (tools/test_install.sh)
 # Ends with each stage's wall time and the ten slowest tests (tools/slowest_tests.py).
 set -euo pipefail
 
@@ -31,6 +32,7 @@ run_logged format "${repo}/tools/check_format.sh"
 run_logged core "${repo}/tools/test_core.sh"
 run_logged ros "${repo}/tools/run_ros_tests.sh"
 run_logged plot /usr/bin/python3 -m unittest discover -s "${repo}/test/plot" -t "${repo}/test/plot"
+run_logged docs /usr/bin/python3 -m unittest discover -s "${repo}/test/docs" -t "${repo}/test/docs"
 run_logged tensile /usr/bin/python3 -m unittest discover -s "${repo}/test/tensile" \
   -t "${repo}/test/tensile"
 run_logged lint bash "${repo}/tools/check_catkin_lint.sh"
@@ -40,7 +42,8 @@ run_logged install bash "${repo}/tools/test_install.sh"
 core_total=$(grep -ho "tests failed out of [0-9]*" "${logs}/core.log" | awk '{s += $5} END {print s + 0}')
 ros_total=$(grep -o "Summary: [0-9]* tests" "${logs}/ros.log" | tail -1 | awk '{print $2 + 0}')
 plot_total=$(grep -o "^Ran [0-9]* test" "${logs}/plot.log" | awk '{print $2 + 0}')
+docs_total=$(grep -o "^Ran [0-9]* test" "${logs}/docs.log" | awk '{print $2 + 0}')
 tensile_total=$(grep -o "^Ran [0-9]* test" "${logs}/tensile.log" | awk '{print $2 + 0}')
 echo "stage times: ${stage_times[*]/%/,} total ${SECONDS} s"
 /usr/bin/python3 "${repo}/tools/slowest_tests.py" "${logs}" "${repo}/ws/build/test_results/yarn_tearing"
-echo "test: $((core_total + ros_total + plot_total + tensile_total)) passed, 0 failed"
+echo "test: $((core_total + ros_total + plot_total + docs_total + tensile_total)) passed, 0 failed"
