@@ -106,13 +106,18 @@ auto slideCases(double dt, bool one_solve) {
       SlideCase{kPi, 0.1, dt, one_solve}, SlideCase{kPi, 0.3, dt, one_solve},
       SlideCase{2.0 * kPi, 0.1, dt, one_solve}, SlideCase{2.0 * kPi, 0.3, dt, one_solve});
 }
-INSTANTIATE_TEST_SUITE_P(SmallStep, CapstanSlide, slideCases(1e-4, true));
-INSTANTIATE_TEST_SUITE_P(Angles, CapstanSlide, slideCases(1e-3, true));
-INSTANTIATE_TEST_SUITE_P(LargeStep, CapstanSlide, slideCases(1e-2, true));
+std::string slideCaseName(const ::testing::TestParamInfo<SlideCase>& info) {
+  return angleName(info.param.wrap_angle) + "_mu" +
+         std::to_string(std::lround(10 * info.param.mu)) + "_" + stepName(info.param.dt);
+}
+INSTANTIATE_TEST_SUITE_P(SmallStep, CapstanSlide, slideCases(1e-4, true), slideCaseName);
+INSTANTIATE_TEST_SUITE_P(Angles, CapstanSlide, slideCases(1e-3, true), slideCaseName);
+INSTANTIATE_TEST_SUITE_P(LargeStep, CapstanSlide, slideCases(1e-2, true), slideCaseName);
 // Friction switched on with the pull: setObstacles with the same post keeps the friction states.
 INSTANTIATE_TEST_SUITE_P(FrictionAtThePull, CapstanSlide,
                          ::testing::Values(SlideCase{2.0 * kPi, 0.1, 1e-2, true, true},
-                                           SlideCase{2.0 * kPi, 0.3, 1e-2, true, true}));
+                                           SlideCase{2.0 * kPi, 0.3, 1e-2, true, true}),
+                         slideCaseName);
 
 }  // namespace
 }  // namespace yarn_tearing::test

@@ -47,7 +47,11 @@ INSTANTIATE_TEST_SUITE_P(StepsAndMeshes, EnergyDrift,
                          ::testing::Values(std::make_tuple(1e-2, 2), std::make_tuple(1e-2, 25),
                                            std::make_tuple(1e-3, 2), std::make_tuple(1e-3, 25),
                                            std::make_tuple(1e-3, 100), std::make_tuple(1e-4, 2),
-                                           std::make_tuple(1e-4, 25)));
+                                           std::make_tuple(1e-4, 25)),
+                         [](const ::testing::TestParamInfo<std::tuple<double, int>>& info) {
+                           return std::to_string(std::get<1>(info.param)) + "vertices_" +
+                                  stepName(std::get<0>(info.param));
+                         });
 
 }  // namespace
 }  // namespace yarn_tearing::test
