@@ -160,7 +160,8 @@ void loadBodies(const PrivateParams& params, SimulationConfig& config) {
   const ParamValue presets =
       params.get("materials").value_or(ParamValue("~materials", XmlRpc::XmlRpcValue()));
   std::set<std::string> names;
-  std::size_t elements = 0;  // vertices + edges
+  std::size_t elements = 0;         // vertices + edges
+  std::size_t fabric_vertices = 0;  // ends x picks over the fabrics
   if (yarns) {
     const std::vector<ParamValue> entries = yarns->elements();
     if (entries.empty() && !fabrics) yarns->fail("a non-empty " + allowed);
@@ -186,6 +187,13 @@ void loadBodies(const PrivateParams& params, SimulationConfig& config) {
       const auto ends = static_cast<std::size_t>(spec.ends);
       const auto picks = static_cast<std::size_t>(spec.picks);
       elements += 3 * ends * picks - ends - picks;
+      fabric_vertices += ends * picks;
+      if (fabric_vertices > bounds::kFabricVertexBudget) {
+        fabrics->fail(
+            "fabrics of at most " + std::to_string(bounds::kFabricVertexBudget) +
+            " vertices (ends x picks) in all (the fabric budget, 256 x 256); these have " +
+            std::to_string(fabric_vertices) + " or more");
+      }
       if (elements > bounds::kSceneBudget) break;
     }
   }

@@ -39,8 +39,12 @@ constexpr double kMaxShearRigidity = 1.0e6;  ///< a fabric's shear_rigidity [N/m
 constexpr double kMinObstacleSize = 1.0e-6;  ///< an obstacle's radius, half length, half extent [m]
 constexpr double kMaxObstacleSize = 1.0e4;   ///< the same, at most [m] (as the core)
 constexpr double kMaxFriction = 10.0;  ///< an obstacle's friction coefficient [-] (as the core)
-/// Vertices plus edges over all yarns: checked before anything is allocated (~200 bytes each).
+/// Vertices plus edges over all yarns and fabrics: checked before anything is allocated. At the
+/// budget, yarns hanging from pins step in about 0.3 s and hold about 0.5 GB (doc/node.md).
 constexpr std::size_t kSceneBudget = 1000000;
+/// Vertices over all fabrics, whose steps solve coupled grids: 256 x 256 steps in about 0.2 s
+/// while falling and holds about 0.5 GB, as the yarns at kSceneBudget (doc/node.md).
+constexpr std::size_t kFabricVertexBudget = 65536;
 
 }  // namespace parameter_bounds
 
