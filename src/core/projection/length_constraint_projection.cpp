@@ -364,6 +364,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
   for (std::size_t e = 0; e < edges.size(); ++e) active_[e] |= candidate_[e] & was_taut_[e];
   bool use_newton = false;
   bool fast_iterations_stalled = false;
+  bool mismatch_needed_newton = false;  // the fast iterations held the lengths, not the forces
   newton_.beginProjection(parameters.time_step);
   for (;;) {
     // With contacts the iterations start at the step's start, which is not the answer.
@@ -392,6 +393,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
       if (!result.converged && contacts != nullptr && result.iterations > 0) {
         newton_.refineSolves();
       }
+      mismatch_needed_newton = mismatch_needed_newton || (!result.converged && !use_newton);
       use_newton = use_newton || !result.converged;
     }
     if (result.converged || result.iterations >= parameters.max_projection_iterations) break;
@@ -479,7 +481,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
   if (!result.converged) computeSidewaysStiffness(edges);  // else forceMismatch's is current
   last_stiffness_.swap(sideways_stiffness_);
   last_time_step2_ = time_step2_;
-  newton_first_next_ = newton_first || fast_iterations_stalled;
+  newton_first_next_ = newton_first || fast_iterations_stalled || mismatch_needed_newton;
   return result;
 }
 

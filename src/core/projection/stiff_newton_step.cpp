@@ -114,7 +114,8 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
   }
   unsymmetric_ = false;
   if (contacts != nullptr) addContactRows(*contacts, inverse_mass, position);
-  if (unsymmetric_ || banded_) {
+  // The banded factorization keeps its own copy of the matrix (refine()).
+  if (unsymmetric_ || (refine_ && !banded_)) {
     matrix_.resize(rows, rows);
     matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
   }
@@ -130,8 +131,7 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     });
   }
   if (banded_) {
-    banded_factorization_.ldlt.compute(matrix_);
-    if (banded_factorization_.ldlt.info() != Eigen::Success) return false;
+    if (!banded_factorization_.factorize(triplets_, rows)) return false;
   } else {
     // The idle rows' stored zeros stay out of the elimination: they only keep the pattern.
     general_factorization_.leaveOutZeros();
@@ -175,8 +175,8 @@ bool StiffNewtonStep::sameLayoutAsLast(const ContactSet* contacts) {
 
 bool StiffNewtonStep::solveAssembled(const Eigen::VectorXd& rhs, Eigen::VectorXd& result) {
   if (banded_) {
-    result = banded_factorization_.ldlt.solve(rhs);
-    return banded_factorization_.ldlt.info() == Eigen::Success && result.allFinite();
+    banded_factorization_.solve(rhs, result);
+    return result.allFinite();
   }
   result = general_factorization_.solve(rhs);
   return result.allFinite();

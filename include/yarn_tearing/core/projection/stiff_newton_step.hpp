@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "yarn_tearing/core/contact/contact_set.hpp"
+#include "yarn_tearing/core/linalg/banded_ldlt.hpp"
 #include "yarn_tearing/core/linalg/pattern_cached_ldlt.hpp"
 #include "yarn_tearing/core/model/edge_incidence.hpp"
 #include "yarn_tearing/core/model/edge_set.hpp"
@@ -102,14 +103,20 @@ class StiffNewtonStep {
   bool sameLayoutAsLast(const ContactSet* contacts);
   /// Solves the assembled symmetric system for `rhs`, into `result`.
   bool solveAssembled(const Eigen::VectorXd& rhs, Eigen::VectorXd& result);
-  /// One pass of iterative refinement of solution_ on the assembled matrix_, `solve(rhs,
+  /// One pass of iterative refinement of solution_ on the assembled matrix (matrix_, or the
+  /// banded factorization's), `solve(rhs,
   /// result)` solving with the factors already computed. A wrap's contact system is factorized
   /// without pivoting (LDL^T) or with pivots chosen for sparsity (LU), which is not backward
   /// stable at (omega dt)^2 ~ 1e7: the force balances then stalled at 1e-13 of their terms, 500
   /// times the round-off of evaluating them; one pass brings them to that round-off.
   template <typename Solve>
   bool refine(const Solve& solve) {
-    residual_ = rhs_ - matrix_ * solution_;
+    if (banded_ && !unsymmetric_) {
+      banded_factorization_.multiply(solution_, residual_);
+      residual_ = rhs_ - residual_;
+    } else {
+      residual_ = rhs_ - matrix_ * solution_;
+    }
     if (!solve(residual_, correction_)) return false;
     solution_ += correction_;
     return solution_.allFinite();
@@ -166,15 +173,8 @@ class StiffNewtonStep {
   /// Every edge joins consecutive vertices (chains): the rows are then banded and factorized in
   /// natural order, O(N); other graphs use Eigen's default (AMD) ordering.
   bool banded_ = false;
-  /// Factorization for banded systems, kept so its storage is reused; copies start without one.
-  struct BandedFactorization {
-    BandedFactorization() = default;
-    BandedFactorization(const BandedFactorization&) {}
-    BandedFactorization& operator=(const BandedFactorization&) { return *this; }
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
-        ldlt;
-  };
-  BandedFactorization banded_factorization_;
+  /// Factorization for banded systems (dense band storage, natural order).
+  BandedLdlt banded_factorization_;
   /// LU for systems with sliding friction (unsymmetric), kept for its storage; copies start
   /// without one.
   struct SlidingFactorization {
