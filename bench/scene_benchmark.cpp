@@ -4,7 +4,8 @@
 //     corners, settled, against the same weave hanging from its whole first row.
 //   BM_PatchObstacle/K: a 16 x 12 cotton patch hanging from its first row; K = 0 without an
 //     obstacle (the reference), 1 a 3 cm ball resting against its middle from the front, 2 the
-//     patch inside a 1 m box (every vertex inside the solid, pushed out over the first steps).
+//     patch inside a 1 m box (every vertex inside the solid, pushed out over the first steps);
+//     1 and 2 only with YARN_TEARING_BENCH_OBSTACLES=1 in the environment.
 //   BM_DiagonalGrid/8/D: an 8 x 8 cotton grid along rows and columns, top row pinned, 0.1 N down
 //     on each vertex of its bottom row, built as a Scene; D = 1 adds both diagonals of every cell
 //     (more edges than vertices, q > n), D = 0 is the reference without them.
@@ -13,6 +14,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdlib>
 
 #include "yarn_tearing/core/simulation/simulator.hpp"
 
@@ -140,7 +142,20 @@ void BM_DiagonalGrid(benchmark::State& state) {
 }
 
 BENCHMARK(BM_FabricHeldAtCorners)->Arg(32)->Arg(64)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_PatchObstacle)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PatchObstacle)->Arg(0)->Unit(benchmark::kMicrosecond);
+// With an obstacle the setup's steps take minutes each today (they did not finish in 150 s):
+// registered only when YARN_TEARING_BENCH_OBSTACLES is set, so that a run of every benchmark
+// ends.
+const bool kObstacleCasesRegistered = [] {
+  if (std::getenv("YARN_TEARING_BENCH_OBSTACLES") == nullptr) return false;
+  benchmark::RegisterBenchmark("BM_PatchObstacle", BM_PatchObstacle)
+      ->Arg(1)
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("BM_PatchObstacle", BM_PatchObstacle)
+      ->Arg(2)
+      ->Unit(benchmark::kMicrosecond);
+  return true;
+}();
 BENCHMARK(BM_DiagonalGrid)->Args({8, 0})->Args({8, 1})->Unit(benchmark::kMicrosecond);
 
 }  // namespace
