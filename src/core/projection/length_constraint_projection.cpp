@@ -324,6 +324,55 @@ ProjectionResult LengthConstraintProjection::projectFast(
     std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
     const SimulationParameters& parameters, EdgeGramSolver& gram, ContactSet* contacts,
     const std::vector<Eigen::Vector3d>* step_start) {
+  const GramSystem system = beginFastProjection(position, edges, parameters, contacts);
+  FastLoop loop;
+  // The Newton steps do not keep vertices on faces (on_faces_): not for those.
+  loop.newton_first = contacts == nullptr && !on_faces_ && newtonFirst(edges.size());
+  ProjectionResult result;
+  measureIterate(position, edges, contacts, result);
+  resetCorrectionDirections(edges.size());
+  // Start directions (SHAKE) only without contacts: the contact rows' Newton steps solve the
+  // symmetric system exactly, with final directions.
+  if (step_start != nullptr && contacts == nullptr) chooseCorrectionDirections(*step_start, edges);
+  warmStartActiveSet(edges);
+  newton_.beginProjection(parameters.time_step);
+  for (;;) {
+    checkConvergence(position, edges, parameters, contacts, loop, result);
+    if (result.converged || result.iterations >= parameters.max_projection_iterations) break;
+    // With contacts, the fast iterations first bring the edges near their limits (a pulled end
+    // may be predicted metres away, too far for Newton steps to start from); then Newton steps
+    // settle the edges and the contacts together.
+    loop.use_newton = loop.use_newton || contacts != nullptr || loop.newton_first;
+    // Contact rows in the fast iterations: when these do not settle, the caller takes the full
+    // solve with Newton steps and contact rows instead.
+    if ((fast_contacts_ != nullptr || on_faces_) &&
+        (loop.use_newton || result.iterations >= kFastIterations)) {
+      break;
+    }
+    if (!loop.use_newton && result.iterations >= kFastIterations) {
+      loop.fast_iterations_stalled = true;
+    }
+    // Not converged with start directions (a step that tears or jerks the piece far from where
+    // it started): finish on final directions, which always converge.
+    if (result.iterations == kStartDirectionIterations) resetCorrectionDirections(edges.size());
+    if (loop.use_newton || result.iterations >= kFastIterations) {
+      // The fast iterations stall (a light yarn swung hard by a heavy end): finish with Newton
+      // steps that include the geometric stiffness.
+      newtonIteration(position, edges, gram, contacts);
+    } else {
+      fastIteration(position, edges, gram, system);
+    }
+    ++result.iterations;
+    measureIterate(position, edges, contacts, result);
+  }
+  endFastProjection(edges, loop, result.converged);
+  return result;
+}
+
+GramSystem LengthConstraintProjection::beginFastProjection(std::vector<Eigen::Vector3d>& position,
+                                                           const EdgeSet& edges,
+                                                           const SimulationParameters& parameters,
+                                                           const ContactSet* contacts) {
   GramSystem system;
   system.direction = &direction_;
   system.vertex_weight = &inverse_mass_;
@@ -344,143 +393,133 @@ ProjectionResult LengthConstraintProjection::projectFast(
     }
     if (last_multiplier_.size() == multiplier_.size()) multiplier_ = last_multiplier_;
   }
-  // The Newton steps do not keep vertices on faces (on_faces_): not for those.
-  const bool newton_first = contacts == nullptr && !on_faces_ && newtonFirst(edges.size());
-  ProjectionResult result;
+  return system;
+}
+
+void LengthConstraintProjection::measureIterate(const std::vector<Eigen::Vector3d>& position,
+                                                const EdgeSet& edges, ContactSet* contacts,
+                                                ProjectionResult& result) {
   result.max_violation = evaluate(position, edges);
   if (contacts != nullptr) {
     contacts->linearize(position);
     result.max_penetration = contacts->maxPenetration();
   }
   if (fast_contacts_ != nullptr) linearizeFastRows(position, result);
-  start_at_a_.assign(edges.size(), 0);
-  start_at_b_.assign(edges.size(), 0);
+}
+
+void LengthConstraintProjection::resetCorrectionDirections(std::size_t num_edges) {
+  start_at_a_.assign(num_edges, 0);
+  start_at_b_.assign(num_edges, 0);
   any_start_direction_ = false;
-  // Start directions (SHAKE) only without contacts: the contact rows' Newton steps solve the
-  // symmetric system exactly, with final directions.
-  if (step_start != nullptr && contacts == nullptr) chooseCorrectionDirections(*step_start, edges);
-  // Warm start: the edges that were taut at the end of the last step most likely still are.
+}
+
+void LengthConstraintProjection::warmStartActiveSet(const EdgeSet& edges) {
+  // The edges that were taut at the end of the last step most likely still are.
   was_taut_.resize(edges.size(), 0);
   for (std::size_t e = 0; e < edges.size(); ++e) active_[e] |= candidate_[e] & was_taut_[e];
-  bool use_newton = false;
-  bool fast_iterations_stalled = false;
-  newton_.beginProjection(parameters.time_step);
-  for (;;) {
-    // With contacts the iterations start at the step's start, which is not the answer.
-    const bool within = result.max_violation <= parameters.constraint_tolerance &&
-                        result.max_penetration <= parameters.constraint_tolerance &&
-                        (contacts == nullptr ||
-                         (result.iterations > 0 && newton_.impulseChange() <= kImpulseTolerance &&
-                          last_move_ <= parameters.constraint_tolerance)) &&
-                        (!newton_first || result.iterations > 0);
-    // A Newton step that stopped pivoting early solved its linearization's complementarity
-    // problem only approximately: the projection ends on one that solved it exactly (the next
-    // pivots fully).
-    result.converged = within && !newton_.stoppedEarly();
-    if (within && newton_.stoppedEarly()) newton_.pivotFully();
-    if (result.converged) {
-      // Held to their limits, but do the constraint forces act along the final edge directions?
-      // Where they act along the directions the iterations started from, a light vertex on a
-      // taut span is flung across the line (the span's transverse stiffness treated explicitly,
-      // unstable for dt^2 T / (m l) > 1): then finish with Newton steps, whose geometric
-      // stiffness makes that part implicit too.
-      result.force_mismatch =
-          forceMismatch(position, edges, fast_contacts_ != nullptr ? fast_contacts_ : contacts);
-      result.converged = result.force_mismatch <= parameters.constraint_tolerance;
-      // Newton steps with contacts that have settled but for the force directions have stalled
-      // at the round-off of their solve (a wrap at (omega dt)^2 ~ 1e7): refine their solves.
-      if (!result.converged && contacts != nullptr && result.iterations > 0) {
-        newton_.refineSolves();
-      }
-      use_newton = use_newton || !result.converged;
-    }
-    if (result.converged || result.iterations >= parameters.max_projection_iterations) break;
-    // With contacts, the fast iterations first bring the edges near their limits (a pulled end
-    // may be predicted metres away, too far for Newton steps to start from); then Newton steps
-    // settle the edges and the contacts together.
-    use_newton = use_newton || contacts != nullptr || newton_first;
-    // Contact rows in the fast iterations: when these do not settle, the caller takes the full
-    // solve with Newton steps and contact rows instead.
-    if ((fast_contacts_ != nullptr || on_faces_) &&
-        (use_newton || result.iterations >= kFastIterations)) {
-      break;
-    }
-    if (!use_newton && result.iterations >= kFastIterations) fast_iterations_stalled = true;
-    if (result.iterations == kStartDirectionIterations) {
-      // Not converged with start directions (a step that tears or jerks the piece far from
-      // where it started): finish on final directions, which always converge.
-      std::fill(start_at_a_.begin(), start_at_a_.end(), 0);
-      std::fill(start_at_b_.begin(), start_at_b_.end(), 0);
-      any_start_direction_ = false;
-    }
-    if (use_newton || result.iterations >= kFastIterations) {
-      // The fast iterations stall (a light yarn swung hard by a heavy end): finish with Newton
-      // steps that include the geometric stiffness.
-      for (std::size_t e = 0; e < edges.size(); ++e) {
-        // With contacts every edge starts taut (pivoting releases the slack ones): guessing a
-        // pulled yarn slack lets the first pass fling it through the obstacles.
-        newton_taut_[e] =
-            candidate_[e] && (multiplier_[e] > 0.0 || residual_[e] > 0.0 || contacts != nullptr);
-      }
-      iterate_ = position;
-      newton_.apply(predicted_, inverse_mass_, edges, gram.incidence(), stretch_state_, candidate_,
-                    newton_taut_, position, multiplier_, contacts,
-                    any_start_direction_
-                        ? StartDirections{&start_direction_, &start_at_a_, &start_at_b_}
-                        : StartDirections{});
-      // With contacts, a Newton step is accepted only once it hardly moves anything: the
-      // violation alone does not show a stationarity error, which a wrap can let grow.
-      last_move_ = 0.0;
-      for (std::size_t e = 0; e < edges.size(); ++e) {
-        if (!candidate_[e]) continue;
-        for (const std::uint32_t v : {edges.vertex_a[e], edges.vertex_b[e]}) {
-          last_move_ = std::max(last_move_, (position[v] - iterate_[v]).norm() / limit_[e]);
-        }
-      }
-    } else {
-      // Linearized at the current iterate x_k (directions J, Gram matrix K = J W J^T), moving the
-      // vertices by -W J^T (m - m_k) gives C(x_k) - K (m - m_k) - (c/dt^2) m <= 0 for every edge,
-      // with m >= 0 the total multipliers and each product zero: a linear complementarity
-      // problem in m, solved exactly. A taut edge may thus become slack (its pull is taken back)
-      // but never pushes.
-      multiplyGram(edges, multiplier_, product_, &fast_rows_.multiplier());
-      for (std::size_t e = 0; e < edges.size(); ++e) {
-        target_[e] = residual_[e] + stretch_state_.shift()[e] * multiplier_[e] + product_[e];
-      }
-      if (fast_contacts_ != nullptr) fast_rows_.setTargets(row_product_);
-      solveComplementarity(edges, gram, system);
-      for (std::size_t e = 0; e < edges.size(); ++e) {
-        if (!candidate_[e]) continue;
-        const double total = std::max(step_[e], 0.0);
-        const double change = total - multiplier_[e];
-        multiplier_[e] = total;
-        if (change == 0.0) continue;
-        const std::uint32_t a = edges.vertex_a[e];
-        const std::uint32_t b = edges.vertex_b[e];
-        position[a] += (inverse_mass_[a] * change) * correctionDirection(e, false);
-        position[b] -= (inverse_mass_[b] * change) * correctionDirection(e, true);
-      }
-      if (fast_contacts_ != nullptr) {
-        fast_rows_.accept(inverse_mass_, position);
-        fast_rows_.store(*fast_contacts_);
-      }
-      if (on_faces_) resting_.keepOnFaces(position);
-    }
-    ++result.iterations;
-    result.max_violation = evaluate(position, edges);
-    if (contacts != nullptr) {
-      contacts->linearize(position);
-      result.max_penetration = contacts->maxPenetration();
-    }
-    if (fast_contacts_ != nullptr) linearizeFastRows(position, result);
+}
+
+void LengthConstraintProjection::checkConvergence(const std::vector<Eigen::Vector3d>& position,
+                                                  const EdgeSet& edges,
+                                                  const SimulationParameters& parameters,
+                                                  const ContactSet* contacts, FastLoop& loop,
+                                                  ProjectionResult& result) {
+  // With contacts the iterations start at the step's start, which is not the answer.
+  const bool within = result.max_violation <= parameters.constraint_tolerance &&
+                      result.max_penetration <= parameters.constraint_tolerance &&
+                      (contacts == nullptr ||
+                       (result.iterations > 0 && newton_.impulseChange() <= kImpulseTolerance &&
+                        last_move_ <= parameters.constraint_tolerance)) &&
+                      (!loop.newton_first || result.iterations > 0);
+  // A Newton step that stopped pivoting early solved its linearization's complementarity
+  // problem only approximately: the projection ends on one that solved it exactly (the next
+  // pivots fully).
+  result.converged = within && !newton_.stoppedEarly();
+  if (within && newton_.stoppedEarly()) newton_.pivotFully();
+  if (!result.converged) return;
+  // Held to their limits, but do the constraint forces act along the final edge directions?
+  // Where they act along the directions the iterations started from, a light vertex on a
+  // taut span is flung across the line (the span's transverse stiffness treated explicitly,
+  // unstable for dt^2 T / (m l) > 1): then finish with Newton steps, whose geometric
+  // stiffness makes that part implicit too.
+  result.force_mismatch =
+      forceMismatch(position, edges, fast_contacts_ != nullptr ? fast_contacts_ : contacts);
+  result.converged = result.force_mismatch <= parameters.constraint_tolerance;
+  // Newton steps with contacts that have settled but for the force directions have stalled
+  // at the round-off of their solve (a wrap at (omega dt)^2 ~ 1e7): refine their solves.
+  if (!result.converged && contacts != nullptr && result.iterations > 0) newton_.refineSolves();
+  loop.mismatch_needed_newton =
+      loop.mismatch_needed_newton || (!result.converged && !loop.use_newton);
+  loop.use_newton = loop.use_newton || !result.converged;
+}
+
+void LengthConstraintProjection::newtonIteration(std::vector<Eigen::Vector3d>& position,
+                                                 const EdgeSet& edges, EdgeGramSolver& gram,
+                                                 ContactSet* contacts) {
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    // With contacts every edge starts taut (pivoting releases the slack ones): guessing a
+    // pulled yarn slack lets the first pass fling it through the obstacles.
+    newton_taut_[e] =
+        candidate_[e] && (multiplier_[e] > 0.0 || residual_[e] > 0.0 || contacts != nullptr);
   }
+  iterate_ = position;
+  newton_.apply(predicted_, inverse_mass_, edges, gram.incidence(), stretch_state_, candidate_,
+                newton_taut_, position, multiplier_, contacts,
+                any_start_direction_
+                    ? StartDirections{&start_direction_, &start_at_a_, &start_at_b_}
+                    : StartDirections{});
+  // With contacts, a Newton step is accepted only once it hardly moves anything: the
+  // violation alone does not show a stationarity error, which a wrap can let grow.
+  last_move_ = 0.0;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (!candidate_[e]) continue;
+    for (const std::uint32_t v : {edges.vertex_a[e], edges.vertex_b[e]}) {
+      last_move_ = std::max(last_move_, (position[v] - iterate_[v]).norm() / limit_[e]);
+    }
+  }
+}
+
+void LengthConstraintProjection::fastIteration(std::vector<Eigen::Vector3d>& position,
+                                               const EdgeSet& edges, EdgeGramSolver& gram,
+                                               const GramSystem& system) {
+  // Linearized at the current iterate x_k (directions J, Gram matrix K = J W J^T), moving the
+  // vertices by -W J^T (m - m_k) gives C(x_k) - K (m - m_k) - (c/dt^2) m <= 0 for every edge,
+  // with m >= 0 the total multipliers and each product zero: a linear complementarity
+  // problem in m, solved exactly. A taut edge may thus become slack (its pull is taken back)
+  // but never pushes.
+  multiplyGram(edges, multiplier_, product_, &fast_rows_.multiplier());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    target_[e] = residual_[e] + stretch_state_.shift()[e] * multiplier_[e] + product_[e];
+  }
+  if (fast_contacts_ != nullptr) fast_rows_.setTargets(row_product_);
+  solveComplementarity(edges, gram, system);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (!candidate_[e]) continue;
+    const double total = std::max(step_[e], 0.0);
+    const double change = total - multiplier_[e];
+    multiplier_[e] = total;
+    if (change == 0.0) continue;
+    const std::uint32_t a = edges.vertex_a[e];
+    const std::uint32_t b = edges.vertex_b[e];
+    position[a] += (inverse_mass_[a] * change) * correctionDirection(e, false);
+    position[b] -= (inverse_mass_[b] * change) * correctionDirection(e, true);
+  }
+  if (fast_contacts_ != nullptr) {
+    fast_rows_.accept(inverse_mass_, position);
+    fast_rows_.store(*fast_contacts_);
+  }
+  if (on_faces_) resting_.keepOnFaces(position);
+}
+
+void LengthConstraintProjection::endFastProjection(const EdgeSet& edges, const FastLoop& loop,
+                                                   bool converged) {
   for (std::size_t e = 0; e < edges.size(); ++e) was_taut_[e] = multiplier_[e] > 0.0 ? 1 : 0;
   last_multiplier_ = multiplier_;
-  if (!result.converged) computeSidewaysStiffness(edges);  // else forceMismatch's is current
+  if (!converged) computeSidewaysStiffness(edges);  // else forceMismatch's is current
   last_stiffness_.swap(sideways_stiffness_);
   last_time_step2_ = time_step2_;
-  newton_first_next_ = newton_first || fast_iterations_stalled;
-  return result;
+  newton_first_next_ =
+      loop.newton_first || loop.fast_iterations_stalled || loop.mismatch_needed_newton;
 }
 
 ProjectionResult LengthConstraintProjection::projectGaussSeidel(

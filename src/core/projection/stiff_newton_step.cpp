@@ -23,12 +23,28 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
                             const std::vector<std::uint8_t>& taut,
                             const std::vector<Eigen::Vector3d>& position,
                             const std::vector<double>& multiplier, const ContactSet* contacts) {
+  const int rows = numberRows(inverse_mass, edges, incidence, taut, contacts);
+  triplets_.clear();
+  rhs_.setZero(rows);
+  addVertexRows(predicted, inverse_mass, position);
+  if (!addEdgeRows(edges, stretch_state, position, multiplier)) return false;
+  unsymmetric_ = false;
+  if (contacts != nullptr) addContactRows(*contacts, inverse_mass, position);
+  if (unsymmetric_) return solveUnsymmetric(rows);
+  if (!solveSymmetric(rows, contacts)) return false;
+  if (start_.direction == nullptr) return true;
+  return refineOnStartDirections(edges, position, inverse_mass, multiplier, stretch_state);
+}
+
+int StiffNewtonStep::numberRows(const std::vector<double>& inverse_mass, const EdgeSet& edges,
+                                const EdgeIncidence& incidence,
+                                const std::vector<std::uint8_t>& taut, const ContactSet* contacts) {
   // Rows in vertex order, each taut edge's row right after its later vertex's: a chain's system
   // is then banded, and the natural ordering factorizes it in O(N) without fill.
   // On other graphs every movable edge has a row, a slack one an idle row (m_e = 0, its
   // couplings stored as zeros): the pattern then holds while the taut set changes, and the
   // factorization's symbolic analysis is kept (PatternCachedLdlt).
-  const std::size_t n = position.size();
+  const std::size_t n = inverse_mass.size();
   const bool fixed_pattern = !banded_;
   vertex_row_.assign(n, -1);
   edge_row_.assign(edges.size(), -1);
@@ -62,9 +78,14 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
       }
     }
   }
-  triplets_.clear();
-  rhs_.setZero(rows);
-  for (std::size_t v = 0; v < n; ++v) {
+  return rows;
+}
+
+void StiffNewtonStep::addVertexRows(const std::vector<Eigen::Vector3d>& predicted,
+                                    const std::vector<double>& inverse_mass,
+                                    const std::vector<Eigen::Vector3d>& position) {
+  const bool fixed_pattern = !banded_;
+  for (std::size_t v = 0; v < position.size(); ++v) {
     const int r = vertex_row_[v];
     if (r < 0) continue;
     const double mass = 1.0 / inverse_mass[v];
@@ -72,6 +93,11 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     for (int i = 0; i < 3; ++i) triplets_.emplace_back(r + i, r + i, mass);
     rhs_.segment<3>(r) = -mass * (position[v] - predicted[v]);
   }
+}
+
+bool StiffNewtonStep::addEdgeRows(const EdgeSet& edges, const EdgeStretchState& stretch_state,
+                                  const std::vector<Eigen::Vector3d>& position,
+                                  const std::vector<double>& multiplier) {
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const bool idle = idle_row_[e] >= 0;
     if (!idle && edge_row_[e] < 0) continue;
@@ -112,26 +138,38 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     }
     triplets_.emplace_back(re, re, diagonal);
   }
-  unsymmetric_ = false;
-  if (contacts != nullptr) addContactRows(*contacts, inverse_mass, position);
-  if (unsymmetric_ || banded_) {
-    matrix_.resize(rows, rows);
-    matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
-  }
-  if (unsymmetric_) {
-    // Sliding friction couples its normal multiplier into the vertex rows only.
-    sliding_factorization_.lu.compute(matrix_);
-    if (sliding_factorization_.lu.info() != Eigen::Success) return false;
-    solution_ = sliding_factorization_.lu.solve(rhs_);
-    if (!refine_) return solution_.allFinite();
-    return refine([this](const Eigen::VectorXd& rhs, Eigen::VectorXd& result) {
-      result = sliding_factorization_.lu.solve(rhs);
-      return result.allFinite();
-    });
-  }
-  if (banded_) {
-    banded_factorization_.ldlt.compute(matrix_);
-    if (banded_factorization_.ldlt.info() != Eigen::Success) return false;
+  return true;
+}
+
+void StiffNewtonStep::assembleMatrix(int rows) {
+  matrix_.resize(rows, rows);
+  matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
+}
+
+bool StiffNewtonStep::solveUnsymmetric(int rows) {
+  // Sliding friction couples its normal multiplier into the vertex rows only.
+  assembleMatrix(rows);
+  sliding_factorization_.lu.compute(matrix_);
+  if (sliding_factorization_.lu.info() != Eigen::Success) return false;
+  solution_ = sliding_factorization_.lu.solve(rhs_);
+  if (!refine_) return solution_.allFinite();
+  return refine([this](const Eigen::VectorXd& rhs, Eigen::VectorXd& result) {
+    result = sliding_factorization_.lu.solve(rhs);
+    return result.allFinite();
+  });
+}
+
+bool StiffNewtonStep::solveSymmetric(int rows, const ContactSet* contacts) {
+  // A chain without contact rows on dense band storage; with them, whose wraps are factorized
+  // near the round-off that decides where a wrap tears, on the sparse LDL^T in natural order.
+  dense_band_ = banded_ && contacts == nullptr;
+  // The dense band keeps its own copy of the matrix (refine()).
+  if ((banded_ && !dense_band_) || (refine_ && !banded_)) assembleMatrix(rows);
+  if (dense_band_) {
+    if (!dense_band_factorization_.factorize(triplets_, rows)) return false;
+  } else if (banded_) {
+    sparse_band_factorization_.ldlt.compute(matrix_);
+    if (sparse_band_factorization_.ldlt.info() != Eigen::Success) return false;
   } else {
     // The idle rows' stored zeros stay out of the elimination: they only keep the pattern.
     general_factorization_.leaveOutZeros();
@@ -140,12 +178,16 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     }
   }
   if (!solveAssembled(rhs_, solution_)) return false;
-  if (refine_ && !refine([this](const Eigen::VectorXd& rhs, Eigen::VectorXd& result) {
-        return solveAssembled(rhs, result);
-      })) {
-    return false;
-  }
-  if (start_.direction == nullptr) return true;
+  return !refine_ || refine([this](const Eigen::VectorXd& rhs, Eigen::VectorXd& result) {
+    return solveAssembled(rhs, result);
+  });
+}
+
+bool StiffNewtonStep::refineOnStartDirections(const EdgeSet& edges,
+                                              const std::vector<Eigen::Vector3d>& position,
+                                              const std::vector<double>& inverse_mass,
+                                              const std::vector<double>& multiplier,
+                                              const EdgeStretchState& stretch_state) {
   // Ends that take the start direction make the exact system unsymmetric; the symmetric one
   // (current directions everywhere) differs from it by the small turn of each such edge in one
   // step and by the geometric stiffness of slow vertices, (omega dt)^2 <= 1/4: refine on it.
@@ -174,9 +216,13 @@ bool StiffNewtonStep::sameLayoutAsLast(const ContactSet* contacts) {
 }
 
 bool StiffNewtonStep::solveAssembled(const Eigen::VectorXd& rhs, Eigen::VectorXd& result) {
+  if (dense_band_) {
+    dense_band_factorization_.solve(rhs, result);
+    return result.allFinite();
+  }
   if (banded_) {
-    result = banded_factorization_.ldlt.solve(rhs);
-    return banded_factorization_.ldlt.info() == Eigen::Success && result.allFinite();
+    result = sparse_band_factorization_.ldlt.solve(rhs);
+    return sparse_band_factorization_.ldlt.info() == Eigen::Success && result.allFinite();
   }
   result = general_factorization_.solve(rhs);
   return result.allFinite();

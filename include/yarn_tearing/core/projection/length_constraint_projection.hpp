@@ -115,10 +115,51 @@ class LengthConstraintProjection {
                        const ContactSet* contacts);
   /// Fills directions, residuals and the active set; returns the max relative violation.
   double evaluate(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
+  /// The fast projection: fast iterations (exact complementarity of each linearization on the
+  /// Gram matrix), and Newton steps (StiffNewtonStep) where those stall, with contacts, or where
+  /// the last projection needed them (newtonFirst()).
   ProjectionResult projectFast(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
                                const SimulationParameters& parameters, EdgeGramSolver& gram,
                                ContactSet* contacts,
                                const std::vector<Eigen::Vector3d>* step_start);
+  /// How one projectFast() call iterates.
+  struct FastLoop {
+    bool newton_first = false;  ///< it started with Newton steps (newtonFirst())
+    bool use_newton = false;    ///< Newton steps from here on
+    /// kFastIterations fast iterations did not converge.
+    bool fast_iterations_stalled = false;
+    /// The fast iterations held the lengths but not the forces' directions (force_mismatch).
+    bool mismatch_needed_newton = false;
+  };
+  /// Sizes the work arrays, keeps the prediction (predicted_) and, with contacts, starts the
+  /// free vertices at the step's start from the last multipliers; returns the Gram system of the
+  /// fast iterations.
+  GramSystem beginFastProjection(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
+                                 const SimulationParameters& parameters,
+                                 const ContactSet* contacts);
+  /// Evaluates the edges (evaluate()) and linearizes the contacts at `position`: the violation
+  /// and penetration of `result`.
+  void measureIterate(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
+                      ContactSet* contacts, ProjectionResult& result);
+  /// Every edge end corrected along the final directions.
+  void resetCorrectionDirections(std::size_t num_edges);
+  /// Adds the edges taut at the end of the last projection to the active set.
+  void warmStartActiveSet(const EdgeSet& edges);
+  /// Sets result.converged (violation, penetration, contacts settled, then force_mismatch) and
+  /// switches `loop` to Newton steps where the forces' directions are not yet right.
+  void checkConvergence(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
+                        const SimulationParameters& parameters, const ContactSet* contacts,
+                        FastLoop& loop, ProjectionResult& result);
+  /// One Newton step (StiffNewtonStep) from the current taut edges; sets last_move_.
+  void newtonIteration(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
+                       EdgeGramSolver& gram, ContactSet* contacts);
+  /// One fast iteration: the linearization's complementarity problem solved exactly, the
+  /// vertices moved by the change of the multipliers.
+  void fastIteration(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
+                     EdgeGramSolver& gram, const GramSystem& system);
+  /// Keeps what the next projection starts from: the taut edges, multipliers, sideways
+  /// stiffness and whether it starts with Newton steps.
+  void endFastProjection(const EdgeSet& edges, const FastLoop& loop, bool converged);
   /// product = K multiplier, K = J W J^T over the candidate edges (matrix-free, any graph); with
   /// fast contact rows, `row_multiplier` their multipliers, and row_product_ their products.
   void multiplyGram(const EdgeSet& edges, const std::vector<double>& multiplier,

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "yarn_tearing/core/contact/contact_set.hpp"
+#include "yarn_tearing/core/linalg/banded_ldlt.hpp"
 #include "yarn_tearing/core/linalg/pattern_cached_ldlt.hpp"
 #include "yarn_tearing/core/model/edge_incidence.hpp"
 #include "yarn_tearing/core/model/edge_set.hpp"
@@ -102,14 +103,20 @@ class StiffNewtonStep {
   bool sameLayoutAsLast(const ContactSet* contacts);
   /// Solves the assembled symmetric system for `rhs`, into `result`.
   bool solveAssembled(const Eigen::VectorXd& rhs, Eigen::VectorXd& result);
-  /// One pass of iterative refinement of solution_ on the assembled matrix_, `solve(rhs,
+  /// One pass of iterative refinement of solution_ on the assembled matrix (matrix_, or the
+  /// banded factorization's), `solve(rhs,
   /// result)` solving with the factors already computed. A wrap's contact system is factorized
   /// without pivoting (LDL^T) or with pivots chosen for sparsity (LU), which is not backward
   /// stable at (omega dt)^2 ~ 1e7: the force balances then stalled at 1e-13 of their terms, 500
   /// times the round-off of evaluating them; one pass brings them to that round-off.
   template <typename Solve>
   bool refine(const Solve& solve) {
-    residual_ = rhs_ - matrix_ * solution_;
+    if (dense_band_ && !unsymmetric_) {
+      dense_band_factorization_.multiply(solution_, residual_);
+      residual_ = rhs_ - residual_;
+    } else {
+      residual_ = rhs_ - matrix_ * solution_;
+    }
     if (!solve(residual_, correction_)) return false;
     solution_ += correction_;
     return solution_.allFinite();
@@ -120,6 +127,30 @@ class StiffNewtonStep {
              const EdgeStretchState& stretch_state, const std::vector<std::uint8_t>& taut,
              const std::vector<Eigen::Vector3d>& position, const std::vector<double>& multiplier,
              const ContactSet* contacts);
+  /// Numbers the rows (vertex_row_, edge_row_, idle_row_, the contacts'); returns their count.
+  int numberRows(const std::vector<double>& inverse_mass, const EdgeSet& edges,
+                 const EdgeIncidence& incidence, const std::vector<std::uint8_t>& taut,
+                 const ContactSet* contacts);
+  /// Adds the free vertices' mass rows to triplets_ and rhs_.
+  void addVertexRows(const std::vector<Eigen::Vector3d>& predicted,
+                     const std::vector<double>& inverse_mass,
+                     const std::vector<Eigen::Vector3d>& position);
+  /// Adds the taut (and idle) edges' rows and geometric stiffness to triplets_ and rhs_; false
+  /// for a taut edge of zero length.
+  bool addEdgeRows(const EdgeSet& edges, const EdgeStretchState& stretch_state,
+                   const std::vector<Eigen::Vector3d>& position,
+                   const std::vector<double>& multiplier);
+  /// matrix_ from triplets_.
+  void assembleMatrix(int rows);
+  /// Solves the system with sliding friction columns (LU) into solution_.
+  bool solveUnsymmetric(int rows);
+  /// Factorizes the symmetric system (banded or general) and solves it into solution_.
+  bool solveSymmetric(int rows, const ContactSet* contacts);
+  /// Refines solution_ on the exact system where edge ends take their start directions.
+  bool refineOnStartDirections(const EdgeSet& edges, const std::vector<Eigen::Vector3d>& position,
+                               const std::vector<double>& inverse_mass,
+                               const std::vector<double>& multiplier,
+                               const EdgeStretchState& stretch_state);
   /// Adds the contacts' rows (numbered by solve) to triplets_ and rhs_.
   void addContactRows(const ContactSet& contacts, const std::vector<double>& inverse_mass,
                       const std::vector<Eigen::Vector3d>& position);
@@ -166,15 +197,19 @@ class StiffNewtonStep {
   /// Every edge joins consecutive vertices (chains): the rows are then banded and factorized in
   /// natural order, O(N); other graphs use Eigen's default (AMD) ordering.
   bool banded_ = false;
-  /// Factorization for banded systems, kept so its storage is reused; copies start without one.
-  struct BandedFactorization {
-    BandedFactorization() = default;
-    BandedFactorization(const BandedFactorization&) {}
-    BandedFactorization& operator=(const BandedFactorization&) { return *this; }
+  /// Factorization for banded systems without contact rows (dense band storage, natural order).
+  BandedLdlt dense_band_factorization_;
+  bool dense_band_ = false;  ///< the last symmetric solve used dense_band_factorization_
+  /// Factorization for banded systems with contact rows, kept so its storage is reused; copies
+  /// start without one.
+  struct SparseBandFactorization {
+    SparseBandFactorization() = default;
+    SparseBandFactorization(const SparseBandFactorization&) {}
+    SparseBandFactorization& operator=(const SparseBandFactorization&) { return *this; }
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
         ldlt;
   };
-  BandedFactorization banded_factorization_;
+  SparseBandFactorization sparse_band_factorization_;
   /// LU for systems with sliding friction (unsymmetric), kept for its storage; copies start
   /// without one.
   struct SlidingFactorization {
