@@ -325,7 +325,7 @@ void Simulator::tear() {
   if (!parameters_.breaking_enabled) return;
   const std::vector<std::uint32_t>& torn = work_.tearing.collect(scene_, time_);
   health_.breaks = static_cast<int>(torn.size());
-  work_.tearing.apply(scene_, time_, parameters_.time_step, pending_events_);
+  work_.tearing.apply(scene_, work_.start_velocity, time_, pending_events_);
 }
 
 void Simulator::setAppliedForce(std::uint32_t vertex, const Eigen::Vector3d& force) {

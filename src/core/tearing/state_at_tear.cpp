@@ -4,7 +4,8 @@
 
 namespace yarn_tearing {
 
-TearEvent tearEventOf(const Scene& scene, std::size_t edge, double time, double time_step) {
+TearEvent tearEventOf(const Scene& scene, const std::vector<Eigen::Vector3d>& start_velocity,
+                      std::size_t edge, double time) {
   const EdgeSet& edges = scene.edges;
   const Yarn& yarn = scene.yarns[edges.yarn[edge]];
   const StressStrainCurve& curve = yarn.material.curve;
@@ -32,8 +33,15 @@ TearEvent tearEventOf(const Scene& scene, std::size_t edge, double time, double 
       std::max(0.0, std::min(elastic_stress, curve.stressAtStrain(event.strain)));
   event.stress = std::max(0.0, std::min(edges.stress[edge], carried));
   event.tension = event.stress * edges.area[edge];
-  const double previous_strain = edges.strain[edge] - edges.strain_rate[edge] * time_step;
-  event.strain_rate = (event.strain - previous_strain) / time_step;
+  // The rate of the geometric strain |x_b - x_a| / L0 - 1 as the step began: the ends' relative
+  // velocity along the edge over L0 (a free end's velocity is its displacement over the previous
+  // step, a grasp's its target's). The step that tears the edge may end at its breaking length,
+  // which stops the stretch part way; the rate it was loaded at is the one it entered with.
+  const Eigen::Vector3d axis = (xb - xa).normalized();
+  const Eigen::Vector3d relative =
+      start_velocity[edges.vertex_b[edge]] - start_velocity[edges.vertex_a[edge]];
+  event.strain_rate =
+      axis.allFinite() ? axis.dot(relative) / edges.original_rest_length[edge] : 0.0;
   return event;
 }
 

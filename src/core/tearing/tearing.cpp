@@ -49,11 +49,12 @@ const std::vector<std::uint32_t>& Tearing::collect(const Scene& scene, double ti
   return collected_;
 }
 
-void Tearing::apply(Scene& scene, double time, double time_step, std::vector<TearEvent>& events) {
+void Tearing::apply(Scene& scene, const std::vector<Eigen::Vector3d>& start_velocity, double time,
+                    std::vector<TearEvent>& events) {
   EdgeSet& edges = scene.edges;
   if (!collected_.empty()) startUnloading(scene, time);
   for (std::uint32_t e : collected_) {
-    events.push_back(tearEventOf(scene, e, time, time_step));
+    events.push_back(tearEventOf(scene, start_velocity, e, time));
     edges.broken[e] = 1;
     edges.tension[e] = 0.0;
     edges.spring_tension[e] = 0.0;

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <cstddef>
+#include <vector>
 
 #include "yarn_tearing/core/model/scene.hpp"
 #include "yarn_tearing/core/tearing/tear_event.hpp"
@@ -18,10 +20,15 @@ namespace yarn_tearing {
 ///   curve(ε))) is what that strain carries: elastically from the plastic strain ε_p, at most the
 ///   loading curve; so σ ≤ the curve at the breaking strain (both times the edge's rate factor,
 ///   EdgeSet::rate_factor, 1 for a rate-independent material);
-/// - plastic_strain = ε_p; strain_rate = (ε − ε_previous) / Δt with ε_previous the strain the
-///   edge had before this step.
+/// - plastic_strain = ε_p;
+/// - strain_rate = d(|x_b − x_a| / L0)/dt = (v_b − v_a)·(x_b − x_a)/|x_b − x_a| / L0 [1/s] with
+///   the ends' velocities v as the step began (`start_velocity`, per vertex [m/s]): the rate of
+///   the edge's geometric strain it was loaded at (the tearing step itself may stop at the
+///   breaking length part way), what a lab reads (crosshead speed over gauge length on a
+///   uniform pull; the stress rate over the curve's tangent modulus on a force ramp).
 /// On a slow pull the estimate and the length agree, and the event reports σ_b·A at ε_b.
-/// `time` [s] is the simulated time of the event, `time_step` [s] the step's Δt.
-TearEvent tearEventOf(const Scene& scene, std::size_t edge, double time, double time_step);
+/// `time` [s] is the simulated time of the event.
+TearEvent tearEventOf(const Scene& scene, const std::vector<Eigen::Vector3d>& start_velocity,
+                      std::size_t edge, double time);
 
 }  // namespace yarn_tearing

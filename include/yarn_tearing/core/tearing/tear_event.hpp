@@ -21,11 +21,14 @@ struct TearEvent {
   FabricSegment segment;       ///< the fabric's family, yarn and segment (when fabric >= 0)
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< edge midpoint [m]
   double time = 0.0;            ///< simulated time at the end of the step [s]
-  double tension = 0.0;         ///< [N]
-  double stress = 0.0;          ///< [Pa]
-  double strain = 0.0;          ///< [-]
-  double plastic_strain = 0.0;  ///< [-]
-  double strain_rate = 0.0;     ///< [1/s]
+  double tension = 0.0;         ///< axial force the edge carried when it tore [N]
+  double stress = 0.0;          ///< tension over the cross-section [Pa]
+  double strain = 0.0;          ///< engineering strain on the original length L0 [-]
+  double plastic_strain = 0.0;  ///< permanent strain on L0 [-]
+  /// Rate of the edge's geometric strain |x_b - x_a| / L0 - 1 in the step that tore it [1/s]:
+  /// the ends' relative velocity along the edge over L0 (a uniform pull at speed v over a gauge
+  /// length L reads v / L; negative while the edge shortens).
+  double strain_rate = 0.0;
 };
 
 }  // namespace yarn_tearing

@@ -21,8 +21,9 @@ class Tearing {
   /// Global ids of the edges to tear this step (ordered by edge id), at simulated `time` [s].
   const std::vector<std::uint32_t>& collect(const Scene& scene, double time);
   /// Tears the collected edges and appends one event each (time = `time` [s]; the state each
-  /// reports follows tearEventOf(), `time_step` [s] the step's Δt).
-  void apply(Scene& scene, double time, double time_step, std::vector<TearEvent>& events);
+  /// reports follows tearEventOf(), `start_velocity` [m/s] the vertices' as the step began).
+  void apply(Scene& scene, const std::vector<Eigen::Vector3d>& start_velocity, double time,
+             std::vector<TearEvent>& events);
   /// When the last of the pieces torn so far has unloaded (its tear's time plus the elastic
   /// wave's crossing time, extent / c) [s]; -1 before any tear.
   double unloadingEnd() const { return unloading_end_; }
