@@ -13,17 +13,6 @@ namespace {
 
 constexpr double kWarnPeriod = 2.0;  ///< [s] between repeated warnings of one reason
 
-/// The pose `fraction` (0..1) of the way from `from` to `to`: position linear, rotation slerp.
-Eigen::Isometry3d interpolate(const Eigen::Isometry3d& from, const Eigen::Isometry3d& to,
-                              double fraction) {
-  const Eigen::Quaterniond a(from.linear());
-  const Eigen::Quaterniond b(to.linear());
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = a.slerp(fraction, b).normalized().toRotationMatrix();
-  pose.translation() = from.translation() + fraction * (to.translation() - from.translation());
-  return pose;
-}
-
 }  // namespace
 
 ObstacleTracker::ObstacleTracker(const FrameTransformer& frames, std::vector<ObstacleSpec> specs,
@@ -31,7 +20,7 @@ ObstacleTracker::ObstacleTracker(const FrameTransformer& frames, std::vector<Obs
     : frames_(frames), warnings_(kWarnPeriod, static_cast<std::size_t>(RefusalReason::kCount)) {
   for (ObstacleSpec& spec : specs) {
     Tracked tracked;
-    tracked.to = tracked.from = spec.obstacle.pose;
+    tracked.motion = FrameMotion::still(spec.obstacle.pose);
     tracked.placed = !spec.attached();
     tracked.spec = std::move(spec);
     tracked_.push_back(std::move(tracked));
@@ -49,9 +38,7 @@ void ObstacleTracker::beginCycle(Simulator& simulator) {
   bool joined = false;
   for (Tracked& tracked : tracked_) {
     if (!tracked.spec.attached()) continue;
-    tracked.from = tracked.to;
     if (lookUp(tracked) && !tracked.placed) {
-      tracked.from = tracked.to;
       tracked.placed = true;
       joined = true;
     }
@@ -61,8 +48,8 @@ void ObstacleTracker::beginCycle(Simulator& simulator) {
 
 bool ObstacleTracker::lookUp(Tracked& tracked) {
   try {
-    const Eigen::Isometry3d pose =
-        frames_.poseInFixedFrame(tracked.spec.attached_frame) * tracked.spec.offset;
+    const FrameMotion motion = frames_.motionOf(tracked.spec.attached_frame);
+    const Eigen::Isometry3d pose = motion.pose * tracked.spec.offset;
     requireBoundedVector(pose.translation(), input_bounds::kMaxDistance,
                          "obstacle '" + tracked.spec.obstacle.name + "' (frame + offset)", "m");
     Obstacle moved = tracked.spec.obstacle;
@@ -72,8 +59,10 @@ bool ObstacleTracker::lookUp(Tracked& tracked) {
     } catch (const std::invalid_argument& invalid) {
       throw InputRejected(RefusalReason::kOutOfBounds, invalid.what());
     }
-    tracked.to = pose;
+    tracked.motion = motion;
+    if (!tracked.placed) tracked.frame_pose = motion.pose;
   } catch (const InputRejected& e) {
+    tracked.motion = FrameMotion::still(tracked.frame_pose);  // where it was at the last step
     warnLookupFailed(tracked, e);
     return false;
   }
@@ -101,18 +90,19 @@ void ObstacleTracker::placeInSimulator(Simulator& simulator) {
     tracked.index = tracked.placed ? static_cast<int>(placed.size()) : -1;
     if (!tracked.placed) continue;
     placed.push_back(tracked.spec.obstacle);
-    placed.back().pose = tracked.to;
+    placed.back().pose = tracked.motion.pose * tracked.spec.offset;
   }
   simulator.setObstacles(placed);  // every pose was validated (lookUp) or loaded valid
 }
 
-void ObstacleTracker::beforeStep(Simulator& simulator, double fraction) {
-  for (const Tracked& tracked : tracked_) {
+void ObstacleTracker::beforeStep(Simulator& simulator, const ros::Time& step_end) {
+  for (Tracked& tracked : tracked_) {
     if (!tracked.spec.attached() || !tracked.placed) continue;
+    tracked.frame_pose = frames_.poseAt(tracked.spec.attached_frame, tracked.motion, step_end);
     try {
       simulator.setObstaclePose(static_cast<std::size_t>(tracked.index),
-                                interpolate(tracked.from, tracked.to, fraction));
-    } catch (const std::exception& e) {  // bounded, finite poses only: not expected
+                                tracked.frame_pose * tracked.spec.offset);
+    } catch (const std::exception& e) {  // past the core's bounds: an extrapolation run away
       ROS_ERROR_THROTTLE(kWarnPeriod, "obstacle '%s' not moved: %s",
                          tracked.spec.obstacle.name.c_str(), e.what());
     }

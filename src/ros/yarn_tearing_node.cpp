@@ -44,7 +44,8 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
       private_nh_(private_nh),
       simulator_(config.parameters, config.yarns, config.fabrics),
       tf_listener_(tf_buffer_),
-      frames_(tf_buffer_, config.node.frame_id, config.node.frame_timeout),
+      frames_(tf_buffer_, config.node.frame_id, config.node.frame_timeout,
+              config.node.max_extrapolation),
       inputs_(frames_),
       obstacles_(frames_, config.obstacles, simulator_),
       markers_(config.node.frame_id, config.node.marker_width),
@@ -98,14 +99,31 @@ void YarnTearingNode::run() {
   restartPacing();
   restartPublishSchedule();
   while (ros::ok() && !stop_requested_) {
+    double mark = wallSeconds();
     queue.callAvailable();
+    mark = recordStage(LoopStage::kCallbacks, mark);
     stepCycle();
-    if (!config_.node.publishesInSimulatedTime() && publish_schedule_.due(wallSeconds())) {
+    mark = wallSeconds();
+    if (!config_.node.publishesInSimulatedTime() && publish_schedule_.due(mark)) {
       publishState();
+      mark = recordStage(LoopStage::kPublishing, mark);
     }
-    diagnostics_.update(wallSeconds(), pacingStatus());
-    queue.callAvailable(ros::WallDuration(idleTimeout()));
+    diagnostics_.update(mark, pacingStatus());
+    const double idle = idleTimeout();
+    if (idle > 0.0) {
+      queue.callAvailable(ros::WallDuration(idle));  // waiting: not a cost of the loop
+    } else {
+      mark = wallSeconds();
+      queue.callAvailable();
+      recordStage(LoopStage::kCallbacks, mark);
+    }
   }
+}
+
+double YarnTearingNode::recordStage(LoopStage stage, double since) {
+  const double now = wallSeconds();
+  diagnostics_.recordStage(stage, now - since);
+  return now;
 }
 
 PacingStatus YarnTearingNode::pacingStatus() const {
@@ -116,11 +134,12 @@ PacingStatus YarnTearingNode::pacingStatus() const {
   pacing.paused = paused_;
   pacing.active_forces = inputs_.activeForces();
   pacing.active_grasps = inputs_.activeGrasps();
+  pacing.lag = paused_ ? 0.0 : scheduler_.lag(wallSeconds(), simulator_.time());
   return pacing;
 }
 
 double YarnTearingNode::idleTimeout() const {
-  if (!paused_ && scheduler_.asFastAsPossible()) {
+  if (!paused_ && (scheduler_.asFastAsPossible() || behind_)) {
     return 0.0;
   }
   if (config_.node.publishesInSimulatedTime()) {
@@ -130,12 +149,14 @@ double YarnTearingNode::idleTimeout() const {
 }
 
 void YarnTearingNode::stepCycle() {
+  behind_ = false;
   if (paused_) {
     return;
   }
+  const double targets_start = wallSeconds();
   inputs_.beginCycle();
   obstacles_.beginCycle(simulator_);
-  const double start = wallSeconds();
+  const double start = recordStage(LoopStage::kTargets, targets_start);
   if (scheduler_.asFastAsPossible()) {
     do {
       stepOnce(1.0);
@@ -148,14 +169,22 @@ void YarnTearingNode::stepCycle() {
         break;  // the rest is caught up in the next cycles (or dropped after max_lag)
       }
     }
+    // still behind (a step costs more than its share of wall time): the loop must not idle
+    behind_ = scheduler_.lag(wallSeconds(), simulator_.time()) >= simulator_.parameters().time_step;
   }
+  const double clock_start = wallSeconds();
   publishClock();
+  recordStage(LoopStage::kPublishing, clock_start);
 }
 
 void YarnTearingNode::stepOnce(double fraction) {
-  inputs_.beforeStep(simulator_, fraction);
-  obstacles_.beforeStep(simulator_, fraction);
+  double mark = wallSeconds();
+  const ros::Time step_end = stampOf(simulator_.time() + simulator_.parameters().time_step);
+  inputs_.beforeStep(simulator_, fraction, step_end);
+  obstacles_.beforeStep(simulator_, step_end);
+  mark = recordStage(LoopStage::kTargets, mark);
   simulator_.step();
+  mark = recordStage(LoopStage::kPhysics, mark);
   diagnostics_.recordStep(simulator_.lastHealth(), simulator_.scene());
   if (!simulator_.lastHealth().restored_yarns.empty()) {
     reportRestoredYarns();
@@ -165,6 +194,7 @@ void YarnTearingNode::stepOnce(double fraction) {
     publishClock();
     publishState();
   }
+  recordStage(LoopStage::kPublishing, mark);
 }
 
 void YarnTearingNode::reportRestoredYarns() {
@@ -335,6 +365,9 @@ void YarnTearingNode::onAppliedForce(const AppliedForce::ConstPtr& msg) {
     inputs_.handleAppliedForce(*msg, simulator_);
   } catch (const InputRejected& e) {
     warnRefused(WarningSource::kAppliedForce, "applied_force", msg->vertex, e);
+  } catch (const std::exception& e) {
+    warnRefused(WarningSource::kAppliedForce, "applied_force", msg->vertex,
+                InputRejected(RefusalReason::kUnexpected, e.what()));
   }
 }
 
@@ -343,6 +376,9 @@ void YarnTearingNode::onGrasp(const Grasp::ConstPtr& msg) {
     inputs_.handleGrasp(*msg, simulator_);
   } catch (const InputRejected& e) {
     warnRefused(WarningSource::kGrasp, "grasp", msg->vertex, e);
+  } catch (const std::exception& e) {
+    warnRefused(WarningSource::kGrasp, "grasp", msg->vertex,
+                InputRejected(RefusalReason::kUnexpected, e.what()));
   }
 }
 

@@ -8,7 +8,10 @@
    and grasps jump): the node stays alive, states keep their rate without NaN, every break event
    is within its yarn's breaking point, RSS grows < 5 MB.
 3. A grasp whose frame stops being updated is reported once and holds its last target; a new
-   grasp to the stale frame is refused."""
+   grasp to the stale frame is refused.
+4. Stamps at the end of ROS time (4294967295 s): an applied_force and a grasp's velocity in a
+   non-static frame at that stamp, and a grasp on a frame sampled at it, are refused or held with
+   a warning naming the reason; nothing reaches the stepping loop."""
 import math
 import random
 import re
@@ -145,9 +148,12 @@ class HostileMessagesTest(unittest.TestCase):
         msg.yarn, msg.vertex, msg.force, msg.duration = yarn, vertex, Vector3(*f), duration
         self.force_pub.publish(msg)
 
-    def grasp(self, yarn="a", vertex=-1, frame="world", release=False):
+    def grasp(self, yarn="a", vertex=-1, frame="world", release=False, velocity=(0.0, 0.0, 0.0),
+              velocity_frame="", stamp=rospy.Time(0)):
         msg = Grasp()
         msg.yarn, msg.vertex, msg.target_frame, msg.release = yarn, vertex, frame, release
+        msg.header.frame_id, msg.header.stamp = velocity_frame, stamp
+        msg.velocity = Vector3(*velocity)
         self.grasp_pub.publish(msg)
 
     def check_states(self, start, end):
@@ -270,6 +276,34 @@ class HostileMessagesTest(unittest.TestCase):
         time.sleep(0.5)
         self.assertTrue(any("stale frame" in t for t in self.logs.texts(since=refused_since)),
                         "a new grasp to the stale frame was not refused")
+
+    def test_4_stamp_at_the_end_of_ros_time(self):
+        self.frames.moving.set()
+        time.sleep(0.5)
+        last = rospy.Time(4294967295)  # the largest stamp ROS time has
+        broadcaster = tf2_ros.TransformBroadcaster()
+        broadcaster.sendTransform(transform("last_frame", (0.0, 0.0, -0.2), last))
+        time.sleep(0.2)
+        since = time.monotonic()
+        for _ in range(3):
+            self.force("b", -1, (0.0, 0.0, -0.01), "moving_frame", 0.0, last)
+            self.grasp("b", 3, "ok_frame", velocity=(0.01, 0.0, 0.0),
+                       velocity_frame="moving_frame", stamp=last)
+            time.sleep(0.1)
+        self.grasp("a", 4, "last_frame")
+        time.sleep(1.5)
+        self.assertEqual(node_pid(), self.pid, "the node restarted or died")
+        self.check_states(since + 0.5, time.monotonic())
+        texts = self.logs.texts(since=since)
+        for topic in ("applied_force", "grasp"):
+            refusals = [t for t in texts if t.startswith(topic + " refused") and
+                        "moving_frame" in t]
+            self.assertTrue(refusals, "%s at stamp %d s not refused: %r" %
+                            (topic, last.secs, texts))
+            self.assertLessEqual(len(refusals), 1, "not throttled: %r" % refusals)
+            self.assertIsNotNone(warning_key(refusals[0]), refusals[0])
+        yarn = support.find_yarn(self.states.latest(), "b")
+        self.assertNotIn(3, list(yarn.support_vertices), "the refused grasp was taken")
 
 
 if __name__ == "__main__":

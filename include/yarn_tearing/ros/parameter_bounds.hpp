@@ -31,6 +31,7 @@ constexpr double kMinDirection = 1.0e-6;      ///< |direction| [-]
 constexpr double kMaxDirection = 1.0e6;       ///< |direction| [-]
 constexpr double kMaxWeibullModulus = 1.0e3;  ///< weibull_modulus [-] (0 = none, else >= 1)
 constexpr double kMaxFrameTimeout = 1.0e6;    ///< frame_timeout [s]
+constexpr double kMaxExtrapolation = 10.0;    ///< max_extrapolation [s]
 constexpr int kMaxYarnVertices = 100000;     ///< num_vertices of one yarn (ends, picks of a fabric)
 constexpr double kMaxShearRigidity = 1.0e6;  ///< a fabric's shear_rigidity [N/m]
 constexpr double kMinObstacleSize = 1.0e-6;  ///< an obstacle's radius, half length, half extent [m]

@@ -81,8 +81,11 @@ class YarnTearingNode {
   /// Restarts the publishing schedule on the clock publish_rate counts in (wall or simulated).
   void restartPublishSchedule();
 
-  /// Takes the steps that are due (or steps for a wall budget when as fast as possible).
+  /// Takes the steps that are due (or steps for a wall budget when as fast as possible); sets
+  /// behind_ when steps are still due after the budget.
   void stepCycle();
+  /// Adds the wall time since `since` [s] to `stage` in the diagnostics; returns now [s].
+  double recordStage(LoopStage stage, double since);
   /// One physics step; `fraction` (0..1] of the cycle done after it, for grasp interpolation.
   void stepOnce(double fraction);
   void publishBreakEvents();
@@ -132,6 +135,7 @@ class YarnTearingNode {
   ros::ServiceServer pause_srv_;
   ros::ServiceServer break_log_srv_;  ///< ~get_break_events
   bool paused_ = false;
+  bool behind_ = false;  ///< the last cycle ended with steps still due: do not idle
   std::atomic<bool> stop_requested_{false};
   boost::recursive_mutex reconfigure_mutex_;
   std::unique_ptr<dynamic_reconfigure::Server<YarnTearingConfig>> reconfigure_;
