@@ -46,6 +46,32 @@ Eigen::Isometry3d FrameMotion::extrapolated(double time, double max_ahead) const
   return result;
 }
 
+PoseCorrection PoseCorrection::between(const Eigen::Isometry3d& was,
+                                       const Eigen::Isometry3d& estimate, double start,
+                                       double span) {
+  PoseCorrection correction;
+  correction.translation = was.translation() - estimate.translation();
+  correction.rotation = Eigen::Quaterniond(was.linear() * estimate.linear().transpose());
+  correction.rotation.normalize();
+  correction.start = start;
+  correction.span = span;
+  return correction;
+}
+
+Eigen::Isometry3d PoseCorrection::applied(const Eigen::Isometry3d& estimate, double time) const {
+  const double remaining = span > 0.0 ? std::clamp(1.0 - (time - start) / span, 0.0, 1.0) : 0.0;
+  if (!(remaining > 0.0)) {
+    return estimate;
+  }
+  Eigen::Isometry3d pose = estimate;
+  pose.translation() += remaining * translation;
+  pose.linear() = (Eigen::Quaterniond::Identity().slerp(remaining, rotation) *
+                   Eigen::Quaterniond(estimate.linear()))
+                      .normalized()
+                      .toRotationMatrix();
+  return pose;
+}
+
 Eigen::Vector3d rampedValue(const Eigen::Vector3d& value, const Eigen::Vector3d& rate, double start,
                             double end, double time, double max_span) {
   const double elapsed = std::clamp(std::min(time, end) - start, 0.0, max_span);

@@ -8,7 +8,6 @@
 #include <limits>
 
 #include "yarn_tearing/ros/clipped_text.hpp"
-#include "yarn_tearing/ros/frame_motion.hpp"
 #include "yarn_tearing/ros/geometry_conversion.hpp"
 #include "yarn_tearing/ros/input_bounds.hpp"
 #include "yarn_tearing/ros/input_rejected.hpp"
@@ -89,23 +88,21 @@ void InputHandler::handleGrasp(const Grasp& msg, Simulator& simulator) {
   requireBoundedVector(toEigen(msg.velocity), input_bounds::kMaxSpeed, "velocity", "m/s");
   requireDuration(msg.motion_duration, "motion_duration");
   GraspTarget target;
-  target.frame = msg.target_frame;
   target.label = VertexAddress::of(msg).describe() + " of '" + clipped(msg.yarn) + "'";
-  target.motion = frames_.motionOf(msg.target_frame);
+  target.follower = FrameFollower(msg.target_frame, frames_.motionOf(msg.target_frame));
   target.velocity =
       frames_.rotateToFixedFrame(toEigen(msg.velocity), msg.header.frame_id, msg.header.stamp);
   target.motion_start = simulator.time();
   target.motion_end = endAfter(target.motion_start, msg.motion_duration);
   const auto existing = grasps_.find(vertex);
   const Eigen::Vector3d& position = simulator.scene().vertices.position[vertex];
-  const Eigen::Vector3d frame_origin = target.motion.pose.translation();
+  const Eigen::Vector3d frame_origin = target.follower.pose().translation();
   if (existing != grasps_.end()) {
     // a re-grasp starts where the previous target was, the frame's motion then takes over
     target.start_offset = existing->second.last_target - frame_origin;
   } else if (position.norm() <= input_bounds::kMaxDistance) {
     target.start_offset = position - frame_origin;
   }  // else a fragment flown far away jumps, the blend stays bounded
-  target.frame_position = frame_origin;
   target.last_target = frame_origin + target.start_offset;
   grasps_[vertex] = target;
 }
@@ -119,17 +116,14 @@ void InputHandler::beginCycle() {
       target.start_offset.setZero();
     }
     try {
-      target.motion = frames_.motionOf(target.frame);
+      target.follower.refresh(frames_);
       if (target.stale) {
         ROS_INFO("grasp of %s: frame '%s' is updated again", target.label.c_str(),
-                 target.frame.c_str());
+                 target.follower.frame().c_str());
         target.stale = false;
       }
     } catch (const InputRejected& e) {
-      Eigen::Isometry3d held = Eigen::Isometry3d::Identity();
-      held.translation() = target.frame_position;
-      target.motion = FrameMotion::still(held);  // where the frame was at the last step
-      reportHeldTarget(target, e);
+      reportHeldTarget(target, e);  // the follower stands where the frame was at the last step
     }
   }
 }
@@ -166,9 +160,8 @@ void InputHandler::beforeStep(Simulator& simulator, double fraction, const ros::
     const Eigen::Vector3d scripted =
         rampedValue(Eigen::Vector3d::Zero(), target.velocity, target.motion_start,
                     target.motion_end, end, input_bounds::kMaxDuration);
-    target.frame_position = frames_.poseAt(target.frame, target.motion, step_end).translation();
-    Eigen::Vector3d goal =
-        target.frame_position + scripted + (1.0 - fraction) * target.start_offset;
+    Eigen::Vector3d goal = target.follower.poseAt(frames_, step_end).translation() + scripted +
+                           (1.0 - fraction) * target.start_offset;
     const double distance = goal.norm();
     if (distance > input_bounds::kMaxDistance) {
       goal *= input_bounds::kMaxDistance / distance;  // a scripted motion run past the bound
@@ -178,10 +171,16 @@ void InputHandler::beforeStep(Simulator& simulator, double fraction, const ros::
   }
 }
 
+bool InputHandler::outrunsFrames(const ros::Time& step_end) const {
+  return std::any_of(grasps_.begin(), grasps_.end(), [&](const auto& entry) {
+    return entry.second.follower.outruns(frames_, step_end);
+  });
+}
+
 std::map<std::uint32_t, std::string> InputHandler::graspFrames() const {
   std::map<std::uint32_t, std::string> frames;
   for (const auto& [vertex, target] : grasps_) {
-    frames.emplace(vertex, target.frame);
+    frames.emplace(vertex, target.follower.frame());
   }
   return frames;
 }

@@ -3,6 +3,7 @@
 #include <ros/console.h>
 #include <ros/time.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "yarn_tearing/ros/input_bounds.hpp"
@@ -20,7 +21,7 @@ ObstacleTracker::ObstacleTracker(const FrameTransformer& frames, std::vector<Obs
     : frames_(frames), warnings_(kWarnPeriod, static_cast<std::size_t>(RefusalReason::kCount)) {
   for (ObstacleSpec& spec : specs) {
     Tracked tracked;
-    tracked.motion = FrameMotion::still(spec.obstacle.pose);
+    tracked.follower = FrameFollower(spec.attached_frame, FrameMotion::still(spec.obstacle.pose));
     tracked.placed = !spec.attached();
     tracked.spec = std::move(spec);
     tracked_.push_back(std::move(tracked));
@@ -59,10 +60,9 @@ bool ObstacleTracker::lookUp(Tracked& tracked) {
     } catch (const std::invalid_argument& invalid) {
       throw InputRejected(RefusalReason::kOutOfBounds, invalid.what());
     }
-    tracked.motion = motion;
-    if (!tracked.placed) tracked.frame_pose = motion.pose;
+    tracked.follower.follow(frames_, motion);
   } catch (const InputRejected& e) {
-    tracked.motion = FrameMotion::still(tracked.frame_pose);  // where it was at the last step
+    tracked.follower.hold();  // where the frame was at the last step
     warnLookupFailed(tracked, e);
     return false;
   }
@@ -90,18 +90,23 @@ void ObstacleTracker::placeInSimulator(Simulator& simulator) {
     tracked.index = tracked.placed ? static_cast<int>(placed.size()) : -1;
     if (!tracked.placed) continue;
     placed.push_back(tracked.spec.obstacle);
-    placed.back().pose = tracked.motion.pose * tracked.spec.offset;
+    if (tracked.spec.attached()) placed.back().pose = tracked.follower.pose() * tracked.spec.offset;
   }
   simulator.setObstacles(placed);  // every pose was validated (lookUp) or loaded valid
+}
+
+bool ObstacleTracker::outrunsFrames(const ros::Time& step_end) const {
+  return std::any_of(tracked_.begin(), tracked_.end(), [&](const Tracked& tracked) {
+    return tracked.spec.attached() && tracked.placed && tracked.follower.outruns(frames_, step_end);
+  });
 }
 
 void ObstacleTracker::beforeStep(Simulator& simulator, const ros::Time& step_end) {
   for (Tracked& tracked : tracked_) {
     if (!tracked.spec.attached() || !tracked.placed) continue;
-    tracked.frame_pose = frames_.poseAt(tracked.spec.attached_frame, tracked.motion, step_end);
     try {
       simulator.setObstaclePose(static_cast<std::size_t>(tracked.index),
-                                tracked.frame_pose * tracked.spec.offset);
+                                tracked.follower.poseAt(frames_, step_end) * tracked.spec.offset);
     } catch (const std::exception& e) {  // past the core's bounds: an extrapolation run away
       ROS_ERROR_THROTTLE(kWarnPeriod, "obstacle '%s' not moved: %s",
                          tracked.spec.obstacle.name.c_str(), e.what());

@@ -22,6 +22,10 @@ namespace {
 constexpr double kWarnPeriod = 2.0;     ///< [s] between repeats of one refusal warning
 constexpr double kCyclePeriod = 0.005;  ///< [s] wall: longest sleep between stepping cycles
 constexpr double kStepBudget = 0.02;    ///< [s] wall: longest stepping before serving callbacks
+/// [s] wall: longest the loop waits for a newer sample of a followed frame that it would otherwise
+/// outrun (its follower would stand still); then it steps on.
+constexpr double kFrameWait = 0.5;
+constexpr double kFramePoll = 0.001;  ///< [s] wall: sleep while waiting for a frame's sample
 /// break_events must never be dropped: at least this, and at least the scene's edge count (each
 /// edge tears at most once between resets, so no burst can be longer).
 constexpr std::uint32_t kBreakQueue = 10000;
@@ -139,6 +143,9 @@ PacingStatus YarnTearingNode::pacingStatus() const {
 }
 
 double YarnTearingNode::idleTimeout() const {
+  if (!paused_ && waiting_for_frames_) {
+    return kFramePoll;  // tf2's listener fills the buffer from its own thread
+  }
   if (!paused_ && (scheduler_.asFastAsPossible() || behind_)) {
     return 0.0;
   }
@@ -148,8 +155,24 @@ double YarnTearingNode::idleTimeout() const {
   return std::min(kCyclePeriod, publish_schedule_.secondsUntilDue(wallSeconds()));
 }
 
+bool YarnTearingNode::waitForFrames() {
+  const ros::Time step_end = stampOf(simulator_.time() + simulator_.parameters().time_step);
+  waiting_for_frames_ = false;
+  if (!inputs_.outrunsFrames(step_end) && !obstacles_.outrunsFrames(step_end)) {
+    frame_wait_start_ = -1.0;
+    return false;
+  }
+  const double now = wallSeconds();
+  if (frame_wait_start_ < 0.0) {
+    frame_wait_start_ = now;
+  }
+  waiting_for_frames_ = now - frame_wait_start_ < kFrameWait;
+  return waiting_for_frames_;
+}
+
 void YarnTearingNode::stepCycle() {
   behind_ = false;
+  waiting_for_frames_ = false;
   if (paused_) {
     return;
   }
@@ -159,11 +182,13 @@ void YarnTearingNode::stepCycle() {
   const double start = recordStage(LoopStage::kTargets, targets_start);
   if (scheduler_.asFastAsPossible()) {
     do {
+      if (waitForFrames()) break;
       stepOnce(1.0);
     } while (wallSeconds() - start < kStepBudget);
   } else {
     const std::uint64_t due = scheduler_.stepsDue(start, simulator_.time());
     for (std::uint64_t k = 1; k <= due; ++k) {
+      if (waitForFrames()) break;
       stepOnce(static_cast<double>(k) / static_cast<double>(due));
       if (wallSeconds() - start > kStepBudget) {
         break;  // the rest is caught up in the next cycles (or dropped after max_lag)

@@ -30,6 +30,24 @@ struct FrameMotion {
   Eigen::Isometry3d extrapolated(double time, double max_ahead) const;
 };
 
+/// What takes a followed pose continuously from where it was to where a newer estimate puts it:
+/// at `start` [s] the whole difference between the two, shrinking linearly to none `span` [s]
+/// later. A follower whose frame's new sample shows it moved otherwise than extrapolated so
+/// reaches the new estimate at the estimate's velocity plus at most difference / span, and never
+/// jumps.
+struct PoseCorrection {
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();         ///< was - estimate at `start` [m]
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  ///< was * estimate^-1 at start
+  double start = 0.0;                                            ///< [s]
+  double span = 0.0;                                             ///< [s] >= 0; 0 = none
+
+  /// The correction from `estimate` back to `was`, both at `start` [s], fading over `span` [s].
+  static PoseCorrection between(const Eigen::Isometry3d& was, const Eigen::Isometry3d& estimate,
+                                double start, double span);
+  /// `estimate` at `time` [s] corrected: `was` at `start`, `estimate` from start + span on.
+  Eigen::Isometry3d applied(const Eigen::Isometry3d& estimate, double time) const;
+};
+
 /// `value` changing at `rate` [value/s] from simulated time `start` [s] until `end` [s] (>= start;
 /// infinity: no end), evaluated at simulated time `time` [s]: value + rate * clamp(min(time, end)
 /// - start, 0, max_span), with `max_span` [s] bounding the product for far times.

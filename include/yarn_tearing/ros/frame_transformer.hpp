@@ -30,6 +30,8 @@ class FrameTransformer {
                    double max_extrapolation);
 
   const std::string& fixedFrame() const { return fixed_frame_; }
+  /// Longest extrapolation past a frame's latest sample [s] (~max_extrapolation).
+  double maxExtrapolation() const { return max_extrapolation_; }
 
   /// `vector` given in `frame` rotated into the fixed frame (rotation only, no translation) at
   /// `stamp` (zero = latest, which must not be stale). An empty `frame` or the fixed frame itself

@@ -8,6 +8,7 @@
 #include "yarn_tearing/AppliedForce.h"
 #include "yarn_tearing/Grasp.h"
 #include "yarn_tearing/core/simulation/simulator.hpp"
+#include "yarn_tearing/ros/frame_follower.hpp"
 #include "yarn_tearing/ros/frame_transformer.hpp"
 #include "yarn_tearing/ros/input_rejected.hpp"
 #include "yarn_tearing/ros/warning_throttle.hpp"
@@ -24,7 +25,8 @@ namespace ros_layer {
 /// magnitude capped at input_bounds::kMaxForce. A grasped vertex is kinematic: its target at each
 /// step is the origin of its target frame at the step's end (FrameTransformer::poseAt(): tf2's
 /// interpolation between the frame's samples, extrapolated at most max_extrapolation past the
-/// latest), plus the grasp's own motion, `velocity` for `motion_duration` simulated seconds from
+/// latest; a new sample that disagrees with the extrapolation taken up smoothly, FrameFollower),
+/// plus the grasp's own motion, `velocity` for `motion_duration` simulated seconds from
 /// the simulated instant the message is taken. A new grasp blends from where the vertex is to its
 /// target over the first stepping cycle. Forces and targets past input_bounds.hpp are refused, so
 /// a step never sees one.
@@ -56,6 +58,10 @@ class InputHandler {
   /// grasp is `fraction` (0..1] of the cycle's steps on from where the vertex was.
   void beforeStep(Simulator& simulator, double fraction, const ros::Time& step_end);
 
+  /// True when a grasp's frame moves and `step_end` is past where its samples can be extrapolated
+  /// (FrameFollower::outruns()).
+  bool outrunsFrames(const ros::Time& step_end) const;
+
   /// Forgets all forces and grasps (the simulator has been reset).
   void clear();
   /// Forgets the forces and grasps on the vertices of yarn `yarn` (restored by the simulator).
@@ -80,16 +86,14 @@ class InputHandler {
   };
 
   struct GraspTarget {
-    std::string frame;   ///< tf frame whose origin the vertex follows
-    std::string label;   ///< "vertex <i> of yarn '<name>'", for warnings
-    FrameMotion motion;  ///< how the frame moves, looked up this cycle
+    FrameFollower follower;  ///< the tf frame whose origin the vertex follows
+    std::string label;       ///< "vertex <i> of yarn '<name>'", for warnings
     Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  ///< grasp's own motion [m/s], fixed frame
     double motion_start = 0.0;                           ///< simulated time the grasp was taken [s]
     double motion_end = 0.0;  ///< simulated time its own motion stops [s] (inf)
     /// Vertex position minus frame origin when grasped [m]; blended away over the first cycle.
     Eigen::Vector3d start_offset = Eigen::Vector3d::Zero();
-    Eigen::Vector3d frame_position = Eigen::Vector3d::Zero();  ///< at the last step [m]
-    Eigen::Vector3d last_target = Eigen::Vector3d::Zero();     ///< of the last step [m]
+    Eigen::Vector3d last_target = Eigen::Vector3d::Zero();  ///< of the last step [m]
     bool fresh = true;   ///< grasped since the last cycle began: that cycle blends the offset
     bool stale = false;  ///< its frame's staleness has been reported
   };

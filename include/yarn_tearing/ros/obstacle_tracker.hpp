@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "yarn_tearing/core/simulation/simulator.hpp"
+#include "yarn_tearing/ros/frame_follower.hpp"
 #include "yarn_tearing/ros/frame_transformer.hpp"
 #include "yarn_tearing/ros/input_rejected.hpp"
 #include "yarn_tearing/ros/obstacle_spec_loader.hpp"
@@ -20,10 +21,10 @@ namespace ros_layer {
 /// follows it as grasp targets do: how the frame moves is looked up once per cycle
 /// (FrameTransformer::motionOf()) and the obstacle put, before each step, where the frame is at
 /// the step's end (FrameTransformer::poseAt(): interpolated between the frame's tf samples,
-/// extrapolated at most max_extrapolation past the latest). A lookup that fails (unknown,
-/// unresolvable or stale frame, an origin past input_bounds::kMaxDistance) holds the obstacle
-/// where it was at the last step, warned throttled per reason; nothing here throws into the step
-/// loop.
+/// extrapolated at most max_extrapolation past the latest; FrameFollower). A lookup that fails
+/// (unknown, unresolvable or stale frame, an origin past input_bounds::kMaxDistance) holds the
+/// obstacle where it was at the last step, warned throttled per reason; nothing here throws into
+/// the step loop.
 class ObstacleTracker {
  public:
   /// `frames` must outlive this object. Gives `simulator` the fixed obstacles of `specs`.
@@ -37,6 +38,10 @@ class ObstacleTracker {
   /// of the step's end).
   void beforeStep(Simulator& simulator, const ros::Time& step_end);
 
+  /// True when an attached obstacle's frame moves and `step_end` is past where its samples can be
+  /// extrapolated (FrameFollower::outruns()).
+  bool outrunsFrames(const ros::Time& step_end) const;
+
   /// Number of obstacles of ~obstacles.
   std::size_t size() const { return tracked_.size(); }
   /// Obstacle `i` of ~obstacles as configured (its pose: the fixed pose, or the offset's frame).
@@ -48,11 +53,10 @@ class ObstacleTracker {
  private:
   struct Tracked {
     ObstacleSpec spec;
-    FrameMotion motion;  ///< how its frame moves, looked up this cycle (fixed: still at its pose)
-    Eigen::Isometry3d frame_pose = Eigen::Isometry3d::Identity();  ///< at the last step [m]
-    int index = -1;       ///< in the simulator's obstacles(); -1 = not (yet) there
-    bool placed = false;  ///< fixed, or attached and its frame resolved at least once
-    bool lost = false;    ///< its last lookup failed (logged when it resolves again)
+    FrameFollower follower;  ///< its tf frame (attached ones)
+    int index = -1;          ///< in the simulator's obstacles(); -1 = not (yet) there
+    bool placed = false;     ///< fixed, or attached and its frame resolved at least once
+    bool lost = false;       ///< its last lookup failed (logged when it resolves again)
   };
 
   /// Looks up where attached obstacle `tracked` is now; false (warned) when it cannot be found.

@@ -84,6 +84,10 @@ class YarnTearingNode {
   /// Takes the steps that are due (or steps for a wall budget when as fast as possible); sets
   /// behind_ when steps are still due after the budget.
   void stepCycle();
+  /// True when the next step would outrun a followed tf frame's samples (a grasp or an obstacle
+  /// would stand still) and the loop has waited less than kFrameWait for a newer one: the cycle
+  /// then ends and the loop polls for tf instead of stepping.
+  bool waitForFrames();
   /// Adds the wall time since `since` [s] to `stage` in the diagnostics; returns now [s].
   double recordStage(LoopStage stage, double since);
   /// One physics step; `fraction` (0..1] of the cycle done after it, for grasp interpolation.
@@ -135,7 +139,9 @@ class YarnTearingNode {
   ros::ServiceServer pause_srv_;
   ros::ServiceServer break_log_srv_;  ///< ~get_break_events
   bool paused_ = false;
-  bool behind_ = false;  ///< the last cycle ended with steps still due: do not idle
+  bool behind_ = false;              ///< the last cycle ended with steps still due: do not idle
+  bool waiting_for_frames_ = false;  ///< the last cycle ended to wait for a frame's sample
+  double frame_wait_start_ = -1.0;   ///< [s] wall, since when it waits; negative: not waiting
   std::atomic<bool> stop_requested_{false};
   boost::recursive_mutex reconfigure_mutex_;
   std::unique_ptr<dynamic_reconfigure::Server<YarnTearingConfig>> reconfigure_;

@@ -59,6 +59,23 @@ TEST(FrameMotion, StandsStillWithoutTwoDistinctSamples) {
   EXPECT_NEAR(same.extrapolated(3.05, 0.1).translation().x(), 1.0, 1e-15);
 }
 
+TEST(PoseCorrection, FadesLinearlyFromWhereItWasToTheEstimate) {
+  const Eigen::Isometry3d was = at({0.5, 0.0, 0.0}, 0.2);
+  const Eigen::Isometry3d estimate = at({0.5005, 0.0, 0.0}, 0.0);
+  const PoseCorrection correction = PoseCorrection::between(was, estimate, 3.0, 0.1);
+  const Eigen::Isometry3d at_start = correction.applied(estimate, 3.0);
+  EXPECT_NEAR((at_start.translation() - was.translation()).norm(), 0.0, 1e-15);
+  EXPECT_NEAR(Eigen::AngleAxisd(at_start.linear()).angle(), 0.2, 1e-12);
+  const Eigen::Isometry3d halfway = correction.applied(estimate, 3.05);
+  EXPECT_NEAR(halfway.translation().x(), 0.50025, 1e-12);
+  EXPECT_NEAR(Eigen::AngleAxisd(halfway.linear()).angle(), 0.1, 1e-12);
+  EXPECT_NEAR((correction.applied(estimate, 3.2).translation() - estimate.translation()).norm(),
+              0.0, 0.0);
+  // no span: the estimate at once
+  const PoseCorrection none = PoseCorrection::between(was, estimate, 3.0, 0.0);
+  EXPECT_NEAR(none.applied(estimate, 3.0).translation().x(), 0.5005, 0.0);
+}
+
 TEST(RampedValue, ChangesAtItsRateBetweenStartAndEnd) {
   const Eigen::Vector3d value(1.0, 0.0, 0.0);
   const Eigen::Vector3d rate(0.0, 2.0, 0.0);
