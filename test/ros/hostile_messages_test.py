@@ -10,8 +10,9 @@
 3. A grasp whose frame stops being updated is reported once and holds its last target; a new
    grasp to the stale frame is refused.
 4. Stamps at the end of ROS time (4294967295 s): an applied_force and a grasp's velocity in a
-   non-static frame at that stamp, and a grasp on a frame sampled at it, are refused or held with
-   a warning naming the reason; nothing reaches the stepping loop."""
+   non-static frame at that stamp are refused, a tf sample of a non-static frame at it is refused
+   (tf2's cache arithmetic would leave ROS time's range), with a warning naming the reason; a grasp
+   on that frame is refused; the node keeps stepping."""
 import math
 import random
 import re
@@ -281,10 +282,11 @@ class HostileMessagesTest(unittest.TestCase):
         self.frames.moving.set()
         time.sleep(0.5)
         last = rospy.Time(4294967295)  # the largest stamp ROS time has
+        since = time.monotonic()
         broadcaster = tf2_ros.TransformBroadcaster()
+        time.sleep(0.5)  # the node subscribes to the new broadcaster
         broadcaster.sendTransform(transform("last_frame", (0.0, 0.0, -0.2), last))
         time.sleep(0.2)
-        since = time.monotonic()
         for _ in range(3):
             self.force("b", -1, (0.0, 0.0, -0.01), "moving_frame", 0.0, last)
             self.grasp("b", 3, "ok_frame", velocity=(0.01, 0.0, 0.0),
@@ -302,8 +304,13 @@ class HostileMessagesTest(unittest.TestCase):
                             (topic, last.secs, texts))
             self.assertLessEqual(len(refusals), 1, "not throttled: %r" % refusals)
             self.assertIsNotNone(warning_key(refusals[0]), refusals[0])
+        tf_refusals = [t for t in texts if t.startswith("tf refused") and "last_frame" in t]
+        self.assertEqual(len(tf_refusals), 1, "tf at stamp %d s: %r" % (last.secs, texts))
+        self.assertIn("time out of range", tf_refusals[0])
         yarn = support.find_yarn(self.states.latest(), "b")
         self.assertNotIn(3, list(yarn.support_vertices), "the refused grasp was taken")
+        yarn = support.find_yarn(self.states.latest(), "a")
+        self.assertNotIn(4, list(yarn.support_vertices), "a grasp on the refused frame was taken")
 
 
 if __name__ == "__main__":

@@ -5,7 +5,6 @@
 #include <std_srvs/Empty.h>
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <atomic>
@@ -28,6 +27,7 @@
 #include "yarn_tearing/ros/stamp_clock.hpp"
 #include "yarn_tearing/ros/step_scheduler.hpp"
 #include "yarn_tearing/ros/support_wrench_publisher.hpp"
+#include "yarn_tearing/ros/tf_input.hpp"
 #include "yarn_tearing/ros/warning_throttle.hpp"
 #include "yarn_tearing/ros/wrench_topics.hpp"
 
@@ -114,7 +114,7 @@ class YarnTearingNode {
   ros::NodeHandle private_nh_;
   Simulator simulator_;
   tf2_ros::Buffer tf_buffer_;
-  tf2_ros::TransformListener tf_listener_;
+  TfInput tf_input_;  ///< /tf and /tf_static into tf_buffer_
   FrameTransformer frames_;
   InputHandler inputs_;
   ObstacleTracker obstacles_;
