@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Measures the node's achieved real-time factor in a user's scene, through its topics: the table
 drag of test/ros/config/table_drag.yaml (a 0.5 m, 50-vertex cotton yarn dragged 20 cm at 5 cm/s
 over a box, mu = 0.3, by a gripper on a tf frame, under /use_sim_time), launched with

@@ -27,6 +27,8 @@ const char* stageName(LoopStage stage) {
       return "publishing";
     case LoopStage::kCallbacks:
       return "callbacks";
+    case LoopStage::kFrameWait:
+      return "waiting for tf frames";
     case LoopStage::kCount:
       break;
   }

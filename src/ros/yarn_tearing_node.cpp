@@ -114,8 +114,12 @@ void YarnTearingNode::run() {
     }
     diagnostics_.update(mark, pacingStatus());
     const double idle = idleTimeout();
-    if (idle > 0.0) {
-      queue.callAvailable(ros::WallDuration(idle));  // waiting: not a cost of the loop
+    if (waiting_for_frames_) {
+      mark = wallSeconds();
+      queue.callAvailable(ros::WallDuration(idle));
+      recordStage(LoopStage::kFrameWait, mark);
+    } else if (idle > 0.0) {
+      queue.callAvailable(ros::WallDuration(idle));  // on schedule: not a cost of the loop
     } else {
       mark = wallSeconds();
       queue.callAvailable();

@@ -33,6 +33,7 @@ enum class LoopStage : std::size_t {
   kPhysics,     ///< Simulator::step() (the core's stages 1-6)
   kPublishing,  ///< break events, states, markers, wrenches, /clock
   kCallbacks,   ///< incoming messages, services, dynamic_reconfigure
+  kFrameWait,   ///< waiting for a newer sample of a followed tf frame (it would be outrun)
   kCount        ///< number of stages (not a stage)
 };
 
