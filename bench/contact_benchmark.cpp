@@ -1,4 +1,4 @@
-// Issue 13's speed targets: a step with contacts against the same yarn's step without them.
+// Speed targets of contact: a step with contacts against the same yarn's step without them.
 //   BM_DrapedOverPeg/25/1 vs BM_DrapedOverPeg/25/0: a 25-vertex cotton yarn pinned at one end,
 //     lying across a 2 mm peg (a capsule) with the rest hanging down beyond it, settled; /0 is the
 //     same yarn without the peg (hanging from its pin). Target: with the peg <= 2x without.
@@ -6,7 +6,7 @@
 //     (a plane, friction mu = 0.3), settled; /0 is the same yarn without the table (falling
 //     freely from the same start); /2 the table without friction. Target: on the table (either)
 //     <= 2x free.
-// Run (README, Performance; interleaved so that a ratio's two cases see the same load):
+// Run (doc/performance.md; interleaved so that a ratio's two cases see the same load):
 //   build/core/yarn_tearing_bench --benchmark_filter='Peg|Plane' --benchmark_repetitions=9
 //     --benchmark_min_time=0.2 --benchmark_enable_random_interleaving=true
 //     --benchmark_report_aggregates_only=true

@@ -1,4 +1,4 @@
-// Steps of a woven fabric (issue 12): hanging at rest, and while a trouser tear runs.
+// Steps of a woven fabric: hanging at rest, and while a trouser tear runs.
 // Run: build/core/yarn_tearing_bench --benchmark_filter=Fabric --benchmark_repetitions=5
 //        --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>

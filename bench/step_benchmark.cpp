@@ -1,5 +1,5 @@
 // One full step, and each stage on its own, for hanging yarns of 25 to 10,000 vertices.
-// Run (README, Performance):
+// Run (doc/performance.md):
 //   build/core/yarn_tearing_bench --benchmark_repetitions=5
 //     --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
@@ -87,7 +87,8 @@ void BM_FirstSecondAfterRelease(benchmark::State& state) {
 /// A span pinned at both ends with a 2 N pretension, under gravity, after 0.05 s: the robot's
 /// case (a yarn between two holders). Arguments: vertices, and the step as 10^-k s. At
 /// dt = 1e-4 s its light vertices' sideways stiffness is past what the fast iterations treat
-/// stably (omega dt > 1), and Newton steps finish each projection (README, departure 1).
+/// stably (omega dt > 1), and Newton steps finish each projection (doc/method.md, "Implicit strain
+/// limit").
 void BM_HeldSpan(benchmark::State& state) {
   const int vertices = static_cast<int>(state.range(0));
   YarnSpec spec = benchYarn(vertices);

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fails when catkin_lint (Debian package catkin-lint) reports an error or warning on the package,
-# except the one explained in README.md ("catkin_lint"): the developer scripts tools/*.sh are
+# except the one explained in doc/architecture.md ("catkin_lint"): the developer scripts tools/*.sh are
 # executable but, by design, not installed. Lints the files git knows (as a clean clone has them),
 # not the build folders.
 set -euo pipefail
@@ -18,4 +18,4 @@ if [[ -n "${unexplained}" ]]; then
   echo "check_catkin_lint: catkin_lint reports the problems above" >&2
   exit 1
 fi
-echo "check_catkin_lint: no errors, no warnings (besides the tools/*.sh scripts, see README)"
+echo "check_catkin_lint: no errors, no warnings (besides the tools/*.sh scripts, see doc/architecture.md)"

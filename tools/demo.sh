@@ -10,7 +10,7 @@
 #   tools/demo.sh bag:=/tmp/demo.bag                # the bag elsewhere (figures still in <out>)
 #   tools/demo.sh record:=false                     # no bag, no figures
 #   tools/demo.sh --capstan                         # the capstan demo instead (capstan_demo.launch,
-#                                                   # ~1 min): also capstan.png
+#                                                   # ~10 s): also capstan.png
 #   tools/demo.sh --fabric                          # the trouser tear instead (fabric_demo.launch):
 #                                                   # fabric filmstrip and tear force-extension
 #

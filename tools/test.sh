@@ -5,11 +5,13 @@
 #   2. core GoogleTest suite, Release and AddressSanitizer + UndefinedBehaviorSanitizer
 #   3. catkin build, ROS-layer unit tests and rostests
 #   4. plot_bag tests (python unittest)
-#   5. tensile_test: a quick virtual tensile test of a few specimens (python unittest)
-#   6. catkin_lint of the package (tools/check_catkin_lint.sh)
-#   7. install space and downstream C++ use (tools/test_install.sh)
-#   8. report only (never fails the run): the node's achieved real-time factor and dropped steps
+#   5. the manual: links, anchors, length, no history (python unittest, test/docs)
+#   6. tensile_test: a quick virtual tensile test of a few specimens (python unittest)
+#   7. catkin_lint of the package (tools/check_catkin_lint.sh)
+#   8. install space and downstream C++ use (tools/test_install.sh)
+#   9. report only (never fails the run): the node's achieved real-time factor and dropped steps
 #      in the table drag (tools/measure_table_drag.sh, at most 2 minutes)
+# Ends with each stage's wall time and the ten slowest tests (tools/slowest_tests.py).
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -18,17 +20,21 @@ mkdir -p "${logs}"
 
 "${repo}/tools/install_deps.sh"
 
+stage_times=()
 run_logged() {
   local name="$1"
   shift
   echo "== ${name}"
+  local start="${SECONDS}"
   "$@" 2>&1 | tee "${logs}/${name}.log"
+  stage_times+=("${name} $((SECONDS - start)) s")
 }
 
 run_logged format "${repo}/tools/check_format.sh"
 run_logged core "${repo}/tools/test_core.sh"
 run_logged ros "${repo}/tools/run_ros_tests.sh"
 run_logged plot /usr/bin/python3 -m unittest discover -s "${repo}/test/plot" -t "${repo}/test/plot"
+run_logged docs /usr/bin/python3 -m unittest discover -s "${repo}/test/docs" -t "${repo}/test/docs"
 run_logged tensile /usr/bin/python3 -m unittest discover -s "${repo}/test/tensile" \
   -t "${repo}/test/tensile"
 run_logged lint bash "${repo}/tools/check_catkin_lint.sh"
@@ -40,5 +46,8 @@ run_logged measure_table_drag timeout --kill-after=10 120 bash "${repo}/tools/me
 core_total=$(grep -ho "tests failed out of [0-9]*" "${logs}/core.log" | awk '{s += $5} END {print s + 0}')
 ros_total=$(grep -o "Summary: [0-9]* tests" "${logs}/ros.log" | tail -1 | awk '{print $2 + 0}')
 plot_total=$(grep -o "^Ran [0-9]* test" "${logs}/plot.log" | awk '{print $2 + 0}')
+docs_total=$(grep -o "^Ran [0-9]* test" "${logs}/docs.log" | awk '{print $2 + 0}')
 tensile_total=$(grep -o "^Ran [0-9]* test" "${logs}/tensile.log" | awk '{print $2 + 0}')
-echo "test: $((core_total + ros_total + plot_total + tensile_total)) passed, 0 failed"
+echo "stage times: ${stage_times[*]/%/,} total ${SECONDS} s"
+/usr/bin/python3 "${repo}/tools/slowest_tests.py" "${logs}" "${repo}/ws/build/test_results/yarn_tearing"
+echo "test: $((core_total + ros_total + plot_total + docs_total + tensile_total)) passed, 0 failed"

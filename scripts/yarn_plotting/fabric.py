@@ -110,8 +110,8 @@ def tear_curve(fabric: FabricSeries, break_times) -> TearCurve:
             # The fabric pulls the grip back: -side * its force along the axis.
             force -= side[v] * np.array([s.get(v, np.zeros(3)) @ axis for s in fabric.supports])
     force /= len(groups)
-    # A state of a step with a tear: its grips' forces include the length stop's (README,
-    # departure 5), up to 10^6 times the yarn's; left out of the curve.
+    # A state of a step with a tear: its grips' forces include the length stop's (doc/method.md,
+    # "Breaking-length stop"), up to 10^6 times the yarn's; left out of the curve.
     breaks = np.asarray(break_times, dtype=float)
     for i, t in enumerate(fabric.t):
         if np.any((breaks <= t + 1e-9) & (breaks > t - TEAR_STEP)):

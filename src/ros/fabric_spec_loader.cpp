@@ -1,5 +1,6 @@
 #include "yarn_tearing/ros/fabric_spec_loader.hpp"
 
+#include <array>
 #include <stdexcept>
 #include <string>
 
@@ -55,10 +56,16 @@ void loadGrid(const ParamValue& fabric, FabricSpec& spec) {
   }
   spec.warp_direction = loadDirection(fabric, "warp_direction", spec.warp_direction);
   spec.weft_direction = loadDirection(fabric, "weft_direction", spec.weft_direction);
-  const Eigen::Vector3d far = spec.origin + spec.warp_length * spec.warp_direction.normalized() +
-                              spec.weft_length * spec.weft_direction.normalized();
-  if (!(far.norm() <= bounds::kMaxPosition)) {
-    fabric.member("warp_length").fail("a size that keeps the fabric within 1e4 m of the origin");
+  // Every corner within the bound (the origin is one; a flat parallelogram's others follow).
+  const Eigen::Vector3d warp = spec.warp_length * spec.warp_direction.normalized();  // [m]
+  const Eigen::Vector3d weft = spec.weft_length * spec.weft_direction.normalized();  // [m]
+  const std::array<Eigen::Vector3d, 3> corners = {spec.origin + warp, spec.origin + weft,
+                                                  spec.origin + warp + weft};
+  for (const Eigen::Vector3d& corner : corners) {
+    if (!(corner.norm() <= bounds::kMaxPosition)) {
+      fabric.member("warp_length")
+          .fail("sizes that keep every corner of the fabric within 1e4 m of the origin");
+    }
   }
 }
 

@@ -1,6 +1,8 @@
 #include "yarn_tearing/ros/marker_builder.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "yarn_tearing/ros/geometry_conversion.hpp"
@@ -25,6 +27,21 @@ std_msgs::ColorRGBA rgba(double r, double g, double b) {
   color.b = static_cast<float>(b);
   color.a = 1.0F;
   return color;
+}
+
+/// Unbleached cotton, as lit face-on.
+const std_msgs::ColorRGBA kClothColor = rgba(0.85, 0.78, 0.62);
+
+/// The cloth's colour on a triangle of (unnormalised) normal `normal`, lit the same from either
+/// side: RViz draws a TRIANGLE_LIST with per-vertex colours unlit, so the shading is baked in as
+/// ambient + diffuse |n . l| from a fixed light above and in front (l in the world frame).
+std_msgs::ColorRGBA shadedCloth(const Eigen::Vector3d& normal) {
+  constexpr double kAmbient = 0.45;  ///< [-] share of the colour on a face edge-on to the light
+  const Eigen::Vector3d light = Eigen::Vector3d(0.4, -0.3, 0.87).normalized();
+  const double length = normal.norm();
+  const double facing = length > 0.0 ? std::abs(normal.dot(light)) / length : 1.0;
+  const double shade = kAmbient + (1.0 - kAmbient) * facing;
+  return rgba(shade * kClothColor.r, shade * kClothColor.g, shade * kClothColor.b);
 }
 
 bool isFabricWeft(const Yarn& yarn) {
@@ -168,14 +185,21 @@ visualization_msgs::Marker MarkerBuilder::mesh(const Scene& scene, const Fabric&
   marker.scale.x = 1.0;
   marker.scale.y = 1.0;
   marker.scale.z = 1.0;
-  marker.color = rgba(0.85, 0.78, 0.62);  // unbleached cotton
+  marker.color = kClothColor;
   const std::vector<Eigen::Vector3d>& x = scene.vertices.position;
   for (const FabricCell& cell : fabric.cells) {
     const bool intact = std::all_of(cell.edge.begin(), cell.edge.end(),
                                     [&](std::uint32_t e) { return scene.edges.intact(e); });
     if (!intact) continue;
-    for (const int corner : {0, 1, 3, 0, 3, 2})
-      marker.points.push_back(toPoint(x[cell.corner[corner]]));
+    for (const std::array<int, 3>& triangle : {std::array<int, 3>{0, 1, 3}, {0, 3, 2}}) {
+      const std::array<Eigen::Vector3d, 3> p = {
+          x[cell.corner[triangle[0]]], x[cell.corner[triangle[1]]], x[cell.corner[triangle[2]]]};
+      const std_msgs::ColorRGBA color = shadedCloth((p[1] - p[0]).cross(p[2] - p[0]));
+      for (const Eigen::Vector3d& point : p) {
+        marker.points.push_back(toPoint(point));
+        marker.colors.push_back(color);
+      }
+    }
   }
   return marker;
 }

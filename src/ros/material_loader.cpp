@@ -70,7 +70,7 @@ Material loadMaterialMap(const ParamValue& map, const std::string& name, bool st
   material.density =
       map.member("density").number(bounds::kMinDensity, bounds::kMaxDensity, "kg/m^3");
   // plastic_viscosity (eta) was replaced by rate_sensitivity; files that say 0.0 (rate
-  // independent, as before) still load.
+  // independent) still load.
   if (map.has("plastic_viscosity") &&
       map.member("plastic_viscosity").nonNegativeNumber("Pa*s") != 0.0) {
     map.member("plastic_viscosity")

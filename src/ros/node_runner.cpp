@@ -13,6 +13,8 @@ namespace yarn_tearing {
 namespace ros_layer {
 namespace {
 constexpr double kFlushDelay = 0.5;  ///< [s] lets a fatal message reach /rosout before exiting
+/// [s] from SIGINT or SIGTERM to the exit, whatever the step in progress costs (within 1 s).
+constexpr double kShutdownDeadline = 0.8;
 }  // namespace
 
 int runYarnTearingNode(int argc, char** argv) {
@@ -29,6 +31,7 @@ int runYarnTearingNode(int argc, char** argv) {
     return kExitInvalidConfiguration;
   }
   try {
+    const ShutdownOnInterrupt shutdown_within(kShutdownDeadline);
     node->run();
   } catch (const std::exception& e) {
     ROS_FATAL("yarn_tearing_node: simulation stopped: %s", e.what());

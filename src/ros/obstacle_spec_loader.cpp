@@ -102,10 +102,12 @@ ObstacleSpec loadObstacleSpec(const ParamValue& entry) {
   }
   const Eigen::Isometry3d pose = loadPose(entry);
   if (entry.has("attached_frame")) {
-    spec.attached_frame = entry.member("attached_frame").string(false);
+    spec.attached_frame = entry.member("attached_frame").string(true);  // "": not attached
     if (spec.attached_frame.size() > input_bounds::kMaxFrameName) {
       entry.member("attached_frame").fail("a tf frame name of at most 256 characters");
     }
+  }
+  if (spec.attached()) {
     spec.offset = pose;
   } else {
     spec.obstacle.pose = pose;

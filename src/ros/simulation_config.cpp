@@ -84,10 +84,12 @@ void warnUnknownKeys(const ros::NodeHandle& private_nh, std::set<std::string> kn
 NodeSettings loadNodeSettings(const PrivateParams& params) {
   NodeSettings node;
   params.read("frame_id", [&](const ParamValue& v) { node.frame_id = v.string(false); });
-  params.read("real_time_factor",
-              [&](const ParamValue& v) { node.real_time_factor = v.number(0.0, 1.0e6, ""); });
-  params.read("publish_rate",
-              [&](const ParamValue& v) { node.publish_rate = v.number(1.0e-3, 1000.0, "Hz"); });
+  params.read("real_time_factor", [&](const ParamValue& v) {
+    node.real_time_factor = v.number(0.0, bounds::kMaxRealTimeFactor, "");
+  });
+  params.read("publish_rate", [&](const ParamValue& v) {
+    node.publish_rate = v.number(bounds::kMinPublishRate, bounds::kMaxPublishRate, "Hz");
+  });
   params.read("publish_clock", [&](const ParamValue& v) { node.publish_clock = v.boolean(); });
   params.read("max_lag", [&](const ParamValue& v) { node.max_lag = v.number(1.0e-3, 10.0, "s"); });
   params.read("marker_width",
@@ -113,7 +115,7 @@ SimulationParameters loadPhysics(const PrivateParams& params) {
                                  {"least_squares", TensionSource::kLeastSquares}});
   });
   params.read("regularization", [&](const ParamValue& v) {
-    // [0, 1), as the core and the README say (number() checks a closed range)
+    // [0, 1), as the core and doc/node.md say (number() checks a closed range)
     const std::string allowed = "a finite number in [0, 1)";
     double regularization = 1.0;
     try {

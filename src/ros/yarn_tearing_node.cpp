@@ -8,12 +8,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "yarn_tearing/YarnStateArray.h"
 #include "yarn_tearing/ros/clipped_text.hpp"
 #include "yarn_tearing/ros/materials_description.hpp"
 #include "yarn_tearing/ros/message_conversion.hpp"
 #include "yarn_tearing/ros/obstacle_markers.hpp"
+#include "yarn_tearing/ros/parameter_bounds.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
@@ -37,6 +39,17 @@ constexpr std::size_t kNumReasons = static_cast<std::size_t>(RefusalReason::kCou
 /// Monotonic wall time [s].
 double wallSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+/// `value` when it is a number in [min, max]; otherwise warns that live tuning refused it and
+/// returns `current`.
+double tunedOrKept(const char* name, double value, double min, double max, double current) {
+  if (std::isfinite(value) && value >= min && value <= max) {
+    return value;
+  }
+  ROS_WARN("dynamic_reconfigure: %s %g refused: must be a number in [%g, %g]; keeping %g", name,
+           value, min, max, current);
+  return current;
 }
 
 }  // namespace
@@ -337,6 +350,15 @@ YarnTearingConfig YarnTearingNode::currentTuning() const {
 
 void YarnTearingNode::onReconfigure(YarnTearingConfig& tuning, std::uint32_t /*level*/) {
   SimulationParameters parameters = simulator_.parameters();
+  // The start parameters' checks: a value that is not a number in its range keeps the current one.
+  tuning.real_time_factor =
+      tunedOrKept("real_time_factor", tuning.real_time_factor, 0.0,
+                  parameter_bounds::kMaxRealTimeFactor, config_.node.real_time_factor);
+  tuning.publish_rate =
+      tunedOrKept("publish_rate", tuning.publish_rate, parameter_bounds::kMinPublishRate,
+                  parameter_bounds::kMaxPublishRate, config_.node.publish_rate);
+  tuning.regularization = tunedOrKept("regularization", tuning.regularization, 0.0,
+                                      std::nextafter(1.0, 0.0), parameters.regularization);
   if (tuning.air_damping < maxStableAirDamping(config_)) {
     parameters.air_damping = tuning.air_damping;
   } else {

@@ -1,4 +1,4 @@
-// A yarn over a box's sharp edge pulled down on both sides with different weights (issue 13): a
+// A yarn over a box's sharp edge pulled down on both sides with different weights: a
 // cube turned 45 degrees about y, the yarn over its top ridge with both tails 30 degrees below
 // horizontal (bend theta = 60 degrees). No gravity: each end carries its weight W as a point
 // mass W/g and a force W along its tail, so the closed forms are those of an Atwood machine
@@ -166,8 +166,7 @@ struct EdgeCase {
 std::string caseName(const ::testing::TestParamInfo<EdgeCase>& info) {
   const EdgeCase& c = info.param;
   return "ratio" + std::to_string(std::lround(100 * c.ratio)) + "_chord" +
-         std::to_string(std::lround(1e3 * c.chord)) + "mm_dt1em" +
-         std::to_string(std::lround(-std::log10(c.dt)));
+         std::to_string(std::lround(1e3 * c.chord)) + "mm_" + stepName(c.dt);
 }
 
 class FrictionlessBoxEdge : public ::testing::TestWithParam<EdgeCase> {};
@@ -253,10 +252,16 @@ TEST_P(BoxEdgeWithFriction, SlidesAboveTheCapstanRatio) {
   }
 }
 
+std::string frictionCaseName(const ::testing::TestParamInfo<FrictionCase>& info) {
+  return "chord" + std::to_string(std::lround(1e3 * info.param.chord)) + "mm_" +
+         stepName(info.param.dt);
+}
+
 INSTANTIATE_TEST_SUITE_P(ChordsSteps, BoxEdgeWithFriction,
                          ::testing::Values(FrictionCase{1e-3, 1e-2}, FrictionCase{2e-3, 1e-2},
                                            FrictionCase{1e-3, 1e-3}, FrictionCase{2e-3, 1e-3},
-                                           FrictionCase{1e-3, 1e-4}, FrictionCase{2e-3, 1e-4}));
+                                           FrictionCase{1e-3, 1e-4}, FrictionCase{2e-3, 1e-4}),
+                         frictionCaseName);
 
 }  // namespace
 }  // namespace yarn_tearing::test

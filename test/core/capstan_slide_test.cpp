@@ -24,7 +24,7 @@ struct SlideCase {
   double mu;          ///< [-]
   double dt;          ///< [s]
   /// Every sliding step must converge in one solve (StepHealth::substeps == 1), not only
-  /// through departure 11's retry.
+  /// through the retry in substeps (doc/method.md, "Substeps for an unconverged step").
   bool one_solve;
   /// Friction switched on (setObstacles with the same post) in the step the pull comes, rather
   /// than 10 ms before: the contacts keep their friction states through it.
@@ -56,8 +56,8 @@ TEST_P(CapstanSlide, WeightRisesAsTheKineticCapstanLawSays) {
   // elasticity (a 24 ms period that the light air damping would not take out), and it rests on
   // the post with friction before the pull comes, as a lab's yarn does. (Were the contacts'
   // friction states forgotten, a point new to a step would be frictionless in its first Newton
-  // step, departure 9: at dt = 1e-2 the whole wrap slipped 2.7 chords in that Newton step when
-  // friction came with the pull, never recovered; friction_at_pull checks they are kept.)
+  // step, doc/method.md, "Friction": at dt = 1e-2 the whole wrap slipped 2.7 chords in that Newton
+  // step when friction came with the pull, never recovered; friction_at_pull checks they are kept.)
   sim.setKinematicTarget(load, sim.scene().vertices.position[load]);
   sim.setAppliedForce(0, kT1 * wrap.tail_direction_a);
   for (const double mu : {0.0, c.friction_at_pull ? 0.0 : c.mu}) {
@@ -86,33 +86,38 @@ TEST_P(CapstanSlide, WeightRisesAsTheKineticCapstanLawSays) {
       ASSERT_EQ(health.substeps, 1) << "step " << i;
     }
   }
-  // The kinetic capstan law, within the issue's 3 %: the pulled tail against the weight's.
+  // The kinetic capstan law, within 3 %: the pulled tail against the weight's.
   const EdgeSet& edges = sim.scene().edges;
   EXPECT_NEAR(edges.tension.front() / edges.tension.back(), law, 0.03 * law);
   // The weight rose, towards the post, by the closed form's travel with the wrap's friction
   // between the law (less 3 % of that travel: the air damping of the yarn takes 0.15 % of the
   // drive, its mass 0.005 %) and 3 % below it (a polygon of chords lets go below e^(mu theta),
-  // departure 9; each per cent below the law adds 1.03 / 0.03 = 34 % to the weight's
+  // doc/method.md, "Friction"; each per cent below the law adds 1.03 / 0.03 = 34 % to the weight's
   // acceleration at this overpull).
   const double rose = (sim.scene().vertices.position[load] - start).dot(-wrap.tail_direction_b);
   EXPECT_GE(rose, 0.97 * eulerTravel(loadAcceleration(t2, law), kSlideTime, c.dt));
   EXPECT_LE(rose, eulerTravel(loadAcceleration(t2, 0.97 * law), kSlideTime, c.dt));
 }
 
-/// The six cases of issue 13 at time step `dt` [s].
+/// The six wraps (theta = pi/2, pi, 2 pi; mu = 0.1, 0.3) at time step `dt` [s].
 auto slideCases(double dt, bool one_solve) {
   return ::testing::Values(
       SlideCase{kPi / 2.0, 0.1, dt, one_solve}, SlideCase{kPi / 2.0, 0.3, dt, one_solve},
       SlideCase{kPi, 0.1, dt, one_solve}, SlideCase{kPi, 0.3, dt, one_solve},
       SlideCase{2.0 * kPi, 0.1, dt, one_solve}, SlideCase{2.0 * kPi, 0.3, dt, one_solve});
 }
-INSTANTIATE_TEST_SUITE_P(SmallStep, CapstanSlide, slideCases(1e-4, true));
-INSTANTIATE_TEST_SUITE_P(Angles, CapstanSlide, slideCases(1e-3, true));
-INSTANTIATE_TEST_SUITE_P(LargeStep, CapstanSlide, slideCases(1e-2, true));
+std::string slideCaseName(const ::testing::TestParamInfo<SlideCase>& info) {
+  return angleName(info.param.wrap_angle) + "_mu" +
+         std::to_string(std::lround(10 * info.param.mu)) + "_" + stepName(info.param.dt);
+}
+INSTANTIATE_TEST_SUITE_P(SmallStep, CapstanSlide, slideCases(1e-4, true), slideCaseName);
+INSTANTIATE_TEST_SUITE_P(Angles, CapstanSlide, slideCases(1e-3, true), slideCaseName);
+INSTANTIATE_TEST_SUITE_P(LargeStep, CapstanSlide, slideCases(1e-2, true), slideCaseName);
 // Friction switched on with the pull: setObstacles with the same post keeps the friction states.
 INSTANTIATE_TEST_SUITE_P(FrictionAtThePull, CapstanSlide,
                          ::testing::Values(SlideCase{2.0 * kPi, 0.1, 1e-2, true, true},
-                                           SlideCase{2.0 * kPi, 0.3, 1e-2, true, true}));
+                                           SlideCase{2.0 * kPi, 0.3, 1e-2, true, true}),
+                         slideCaseName);
 
 }  // namespace
 }  // namespace yarn_tearing::test

@@ -66,11 +66,15 @@ TEST_P(CapstanTear, BreaksOnThePulledSideAtItsBreakingForce) {
   EXPECT_LT((sim.scene().vertices.position[0] - start).norm(), 2e-5) << "end A moved [m]";
 }
 
+std::string tearCaseName(const ::testing::TestParamInfo<TearCase>& info) {
+  return angleName(info.param.wrap_angle) + "_" + stepName(info.param.dt);
+}
 INSTANTIATE_TEST_SUITE_P(Angles, CapstanTear,
                          ::testing::Values(TearCase{kPi / 2.0, 1e-3}, TearCase{kPi, 1e-3},
                                            TearCase{2.0 * kPi, 1e-3}, TearCase{kPi, 1e-4},
                                            TearCase{2.0 * kPi, 1e-4}, TearCase{kPi / 2.0, 1e-2},
-                                           TearCase{kPi, 1e-2}, TearCase{2.0 * kPi, 1e-2}));
+                                           TearCase{kPi, 1e-2}, TearCase{2.0 * kPi, 1e-2}),
+                         tearCaseName);
 
 }  // namespace
 }  // namespace yarn_tearing::test

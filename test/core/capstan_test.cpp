@@ -74,9 +74,13 @@ TEST_P(FrictionlessWrap, SlidesTowardsTheHarderPull) {
   EXPECT_GT(pulled.run(1.01, 0.003), 1e-3) << "end A moved [m]";
 }
 
+std::string wrapCaseName(const ::testing::TestParamInfo<WrapCase>& info) {
+  return angleName(info.param.wrap_angle) + "_" + stepName(info.param.dt);
+}
 INSTANTIATE_TEST_SUITE_P(Angles, FrictionlessWrap,
                          ::testing::Values(WrapCase{kPi / 2.0, 1e-3}, WrapCase{kPi, 1e-3},
-                                           WrapCase{2.0 * kPi, 1e-3}, WrapCase{kPi, 1e-4}));
+                                           WrapCase{2.0 * kPi, 1e-3}, WrapCase{kPi, 1e-4}),
+                         wrapCaseName);
 
 struct FrictionCase {
   double wrap_angle;  ///< [rad]
@@ -104,8 +108,8 @@ class FrictionWrap : public ::testing::TestWithParam<FrictionCase> {
     }
   }
   /// Bends of the wrap with friction [rad]: a polygon of chords lets go below e^(mu theta) by
-  /// an amount that falls as the bend squared (README, departure 9: at 2 pi, mu = 0.3, 5.1 % at
-  /// 0.4 rad, 1.4 % at 0.2, 0.4 % at 0.1).
+  /// an amount that falls as the bend squared (doc/method.md, "Friction": at 2 pi, mu = 0.3, 5.1 %
+  /// at 0.4 rad, 1.4 % at 0.2, 0.4 % at 0.1).
   static constexpr double kFineBend = 0.2;
 };
 
@@ -175,19 +179,23 @@ TEST_P(FrictionHoldThenSlide, HoldsAt97AndSlidesAt103PercentOfTheCapstanLaw) {
   expectSlidesAt103Percent(pulled, c);
 }
 
-/// The six cases of issue 13 at time step `dt` [s].
+/// The six wraps (theta = pi/2, pi, 2 pi; mu = 0.1, 0.3) at time step `dt` [s].
 auto capstanCases(double dt) {
   return ::testing::Values(FrictionCase{kPi / 2.0, 0.1, dt}, FrictionCase{kPi / 2.0, 0.3, dt},
                            FrictionCase{kPi, 0.1, dt}, FrictionCase{kPi, 0.3, dt},
                            FrictionCase{2.0 * kPi, 0.1, dt}, FrictionCase{2.0 * kPi, 0.3, dt});
 }
-INSTANTIATE_TEST_SUITE_P(Angles, FrictionWrap, capstanCases(1e-3));
-INSTANTIATE_TEST_SUITE_P(Angles, FrictionSlide, capstanCases(1e-3));
+std::string frictionCaseName(const ::testing::TestParamInfo<FrictionCase>& info) {
+  return angleName(info.param.wrap_angle) + "_mu" +
+         std::to_string(std::lround(10 * info.param.mu)) + "_" + stepName(info.param.dt);
+}
+INSTANTIATE_TEST_SUITE_P(Angles, FrictionWrap, capstanCases(1e-3), frictionCaseName);
+INSTANTIATE_TEST_SUITE_P(Angles, FrictionSlide, capstanCases(1e-3), frictionCaseName);
 // At dt = 1e-2 the 3 % harder pull takes the light yarn (0.05 mg vertices, 1 mm chords) off
 // the post within one step: holding only (the slide with a weight on the held side, as a lab
 // measures it: capstan_slide_test.cpp).
-INSTANTIATE_TEST_SUITE_P(LargeStep, FrictionWrap, capstanCases(1e-2));
-INSTANTIATE_TEST_SUITE_P(SmallStep, FrictionHoldThenSlide, capstanCases(1e-4));
+INSTANTIATE_TEST_SUITE_P(LargeStep, FrictionWrap, capstanCases(1e-2), frictionCaseName);
+INSTANTIATE_TEST_SUITE_P(SmallStep, FrictionHoldThenSlide, capstanCases(1e-4), frictionCaseName);
 
 }  // namespace
 }  // namespace yarn_tearing::test

@@ -116,9 +116,14 @@ TEST(ObstacleGeometry, SameSolidAtTheSamePoseWhateverItsFrictionOrName) {
   EXPECT_FALSE(post.sameGeometry(box));
 }
 
+std::string tableCaseName(const ::testing::TestParamInfo<TableCase>& info) {
+  return std::to_string(info.param.vertices) + "vertices_mu" +
+         std::to_string(std::lround(10 * info.param.mu)) + "_" + stepName(info.param.dt);
+}
 INSTANTIATE_TEST_SUITE_P(Table, YarnOnTable,
                          ::testing::Values(TableCase{1e-3, 25, 0.3}, TableCase{1e-4, 25, 0.3},
-                                           TableCase{1e-3, 100, 0.3}, TableCase{1e-3, 25, 0.0}));
+                                           TableCase{1e-3, 100, 0.3}, TableCase{1e-3, 25, 0.0}),
+                         tableCaseName);
 
 }  // namespace
 }  // namespace yarn_tearing::test

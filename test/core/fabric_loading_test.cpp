@@ -42,7 +42,7 @@ TEST(FabricLoading, HangingFabricsSupportsCarryItsWeight) {
 /// apart; returns the largest pull the last row's grips felt before the first break [N] and the
 /// events. (In the step of a break the edge has reached its breaking length, where the length
 /// constraint is a stop 10^6 times stiffer than the yarn: that step's support force is the stop's
-/// and is not a load the fabric carried; README, departure 5.)
+/// and is not a load the fabric carried; doc/method.md, "Breaking-length stop".)
 double pullStripUntilTorn(Simulator& sim, double speed, std::vector<TearEvent>& events) {
   const Scene& scene = sim.scene();
   const Fabric& fabric = scene.fabrics[0];

@@ -59,10 +59,12 @@ StripRecoil pullStripUntilItTears(double dt, int recoil_substeps) {
       sim.setKinematicTarget(grip[k], start[k] + speed * i * dt * warp);
     }
     // The step before the tear's: in the tear's own step the edges at their breaking length
-    // feel the length stop's force (README, departure 5). One step's pull adds at most 1 % to it.
+    // feel the length stop's force (doc/method.md, "Breaking-length stop"). One step's pull adds at
+    // most 1 % to it.
     const double stored_before = storedElasticEnergy(scene);
     sim.step();
-    // (Without substeps an unconverged step is not taken again: departure 11.)
+    // (Without substeps an unconverged step is not taken again: doc/method.md,
+    // "Substeps for an unconverged step".)
     if (recoil_substeps > 1) {
       EXPECT_TRUE(sim.lastHealth().projection_converged) << "step " << i;
     }

@@ -166,7 +166,11 @@ TEST(HeldYarnEdge, EdgeBetweenTwoPinsCarriesItsStretchAndTears) {
 }
 
 INSTANTIATE_TEST_SUITE_P(StepsAndGravity, HeldYarn,
-                         ::testing::Combine(::testing::Values(1.0e-3, 1.0e-4), ::testing::Bool()));
+                         ::testing::Combine(::testing::Values(1.0e-3, 1.0e-4), ::testing::Bool()),
+                         [](const ::testing::TestParamInfo<std::tuple<double, bool>>& info) {
+                           return stepName(std::get<0>(info.param)) +
+                                  (std::get<1>(info.param) ? "_gravity" : "_weightless");
+                         });
 
 class GrippersDrawApart : public ::testing::TestWithParam<std::tuple<int, double, bool>> {};
 
@@ -232,7 +236,12 @@ TEST_P(GrippersDrawApart, TearsOnceAtTheBreakingElongationAndForce) {
 
 INSTANTIATE_TEST_SUITE_P(VerticesStepsAndGravity, GrippersDrawApart,
                          ::testing::Combine(::testing::Values(2, 3, 5, 10, 25),
-                                            ::testing::Values(1.0e-3, 1.0e-4), ::testing::Bool()));
+                                            ::testing::Values(1.0e-3, 1.0e-4), ::testing::Bool()),
+                         [](const ::testing::TestParamInfo<std::tuple<int, double, bool>>& info) {
+                           return std::to_string(std::get<0>(info.param)) + "vertices_" +
+                                  stepName(std::get<1>(info.param)) +
+                                  (std::get<2>(info.param) ? "_gravity" : "_weightless");
+                         });
 
 // A taut span plucked sideways in the middle, against the same span with truly stiff springs.
 TEST(HeldYarnReference, PluckedSpanMatchesTheStiffReference) {

@@ -45,10 +45,15 @@ TEST_P(YarnOverPeg, SegmentsStayOutAndEveryStepConverges) {
 }
 
 // Up to 10^4 vertex masses on the end, at dt = 1e-3 and 1e-4.
+std::string pegCaseName(const ::testing::TestParamInfo<PegCase>& info) {
+  return "end" + std::to_string(std::lround(info.param.end_mass_in_vertex_masses)) +
+         "vertexmasses_" + stepName(info.param.dt);
+}
 INSTANTIATE_TEST_SUITE_P(Weights, YarnOverPeg,
                          ::testing::Values(PegCase{1e-3, 0.0, 1.0}, PegCase{1e-3, 10.0, 1.0},
                                            PegCase{1e-3, 100.0, 1.0}, PegCase{1e-3, 1.0e4, 1.0},
-                                           PegCase{1e-4, 1.0e4, 0.3}));
+                                           PegCase{1e-4, 1.0e4, 0.3}),
+                         pegCaseName);
 
 }  // namespace
 }  // namespace yarn_tearing::test

@@ -86,7 +86,7 @@ TEST(Recoil, ATearReleasesAtLeastHalfItsElasticEnergyAtOneMillisecond) {
 
 // The step after the tear takes substeps of dt / recoil_substeps only while the pieces unload
 // (the elastic wave crosses a piece no longer than the stretched yarn, L (1 + eps_b) / c), then
-// at most 4 substeps growing to the step's end (README, departure 7).
+// at most 4 substeps growing to the step's end (doc/method.md, "Recoil substeps").
 TEST(Recoil, FineSubstepsOnlyWhileThePiecesUnload) {
   const double dt = 1.0e-3;
   const int fine = SimulationParameters{}.recoil_substeps;

@@ -31,7 +31,7 @@ YarnSpec horizontalYarn() {
 }
 
 TEST(StateAtTear, ThousandNewtonForceReportsAtMostTheBreakingPoint) {
-  // The case: 1e3 N on a cotton yarn of ~15 N strength reported strain 3.3.
+  // 1e3 N on a cotton yarn of ~15 N strength reported strain 3.3.
   Simulator sim(parametersWithoutGravity(), {horizontalYarn()});
   sim.setAppliedForce(sim.scene().globalVertex(0, -1), Eigen::Vector3d(1.0e3, 0.0, 0.0));
   std::vector<TearEvent> events;
@@ -48,7 +48,7 @@ TEST(StateAtTear, ThousandNewtonForceReportsAtMostTheBreakingPoint) {
 }
 
 TEST(StateAtTear, GraspThatJumpsReportsAtMostTheBreakingPoint) {
-  // The case: a grasp target jumping in one cycle reported strain 0.595, 4.5 GPa, 141 N.
+  // A grasp target jumping in one cycle reported strain 0.595, 4.5 GPa, 141 N.
   YarnSpec spec = horizontalYarn();
   spec.pinned = {0};
   Simulator sim(parametersWithoutGravity(), {spec});

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 11, under /use_sim_time with real_time_factor 0: an AppliedForce ramp is applied by the
+"""Under /use_sim_time with real_time_factor 0: an AppliedForce ramp is applied by the
 node in simulated time, so the yarn tears when the ramp reaches its breaking force, however far
 the simulation outruns the publisher. The test pauses the node, sends a ramp from zero at
 force_rate, resumes, and checks the break's simulated time against the closed form

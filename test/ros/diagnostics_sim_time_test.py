@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 10, under /use_sim_time with the node's own /clock: /diagnostics keeps its wall rate
+"""Under /use_sim_time with the node's own /clock: /diagnostics keeps its wall rate
 through ~reset (ROS time jumps back to 0) and through pause/resume, without claiming the node is
 slower than real_time_factor; back-to-back resets do not publish more states than publish_rate."""
 import time

@@ -76,7 +76,7 @@ class FabricTest(unittest.TestCase):
         # A force rising at 20 N/s down on the last row's first vertex: its warp segment (warp yarn
         # 0, segment picks - 2) carries it and tears at the breaking force 3e8 Pa * pi (1e-4 m)^2 =
         # 9.42 N. (A 30 N step on this 0.4 mg vertex tore one of several segments depending on
-        # the step it arrived in; issue 12 keeps that open.)
+        # the step it arrived in; doc/known_limits.md.)
         force_pub = rospy.Publisher("applied_force", AppliedForce, queue_size=10)
         support.wait_until(lambda: force_pub.get_num_connections() > 0, 5.0)
         force = AppliedForce()

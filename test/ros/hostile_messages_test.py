@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 10, through topics only: nothing a client sends can kill, poison or stall the node.
+"""Through topics only: nothing a client sends can kill, poison or stall the node.
 
 1. A flood of 10,000 distinct bad messages in 10 s (out-of-range vertices, unknown yarns, 200 kB
    names, forces past 1e6 N, infinities, unknown, stale, infinite and 1e308 tf frames): at most

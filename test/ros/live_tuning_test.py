@@ -3,8 +3,8 @@
 runs. real_time_factor 0.5 halves the simulated seconds per wall second; publish_rate 10 Hz gives
 10 states per second; `dynparam set ... paused true` stops simulated time; with breaking_enabled
 false a force twice the breaking force tears nothing, and switched back on it tears the yarn;
-air_damping and regularization come back as set, and an air_damping that would make the explicit
-drag unstable is refused."""
+air_damping and regularization come back as set, an air_damping that would make the explicit
+drag unstable is refused, and a nan real_time_factor, publish_rate or regularization is refused."""
 import math
 import subprocess
 import time
@@ -85,6 +85,19 @@ class LiveTuningTest(unittest.TestCase):
         # explicit drag must stay below the mass per length / time_step (4.7e-2 N*s/m^2 here)
         config = client.update_configuration({"air_damping": 1.0})
         self.assertEqual(config["air_damping"], 0.01, "an unstable air_damping was accepted")
+
+        # Values that are not numbers are refused as at start: the current ones stay in effect
+        # and simulated time keeps running.
+        for name in ("real_time_factor", "publish_rate", "regularization"):
+            before = client.get_configuration(timeout=10.0)[name]
+            subprocess.run(["/usr/bin/python3", dynparam, "set", NODE, name, "nan"], check=True,
+                           timeout=30.0)
+            after = client.get_configuration(timeout=10.0)[name]
+            self.assertEqual(after, before, name + " nan was accepted")
+        running_at = states.latest().sim_time
+        time.sleep(1.0)
+        self.assertGreater(states.latest().sim_time, running_at + 0.5, "stopped after nan")
+        self.assertGreater(states.latest().header.stamp.to_sec(), 0.0)
 
 
 if __name__ == "__main__":

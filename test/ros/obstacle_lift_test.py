@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Through topics only (issue 13): a yarn lies on a table (a fixed plane); a box attached to the
+"""Through topics only: a yarn lies on a table (a fixed plane); a box attached to the
 tf frame `lift`, broadcast here, rises from below the table at LIFT_SPEED, picks the yarn up and
 carries it LIFT_HEIGHT above the table. While it carries it:
 - the box's published contact wrench (~obstacles/lift/wrench: the force the yarn exerts on the

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 10: 200 seeded mutations of a valid parameter file (infinities, 1e308, 1e-300, wrong
+"""200 seeded mutations of a valid parameter file (infinities, 1e308, 1e-300, wrong
 types, huge strings, missing and unknown keys, scenes past the budget) are each loaded by
 check_config, which validates exactly as yarn_tearing_node does and then simulates up to 1 s.
 Each must exit 0 (valid, and the simulation stayed finite) or 1 with a message naming a parameter

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 4: plot_bag on a bag recorded in a test run. yarn_states, break_events and the latched
+"""plot_bag on a bag recorded in a test run. yarn_states, break_events and the latched
 yarn_materials are written into a rosbag as they arrive, until AFTER_BREAK simulated seconds
 after the tear; yarn_plotting.make_all (from the package's scripts folder, as test/plot imports
 it) then writes each figure, and the break instants it draws are the bag's BreakEvent stamps."""

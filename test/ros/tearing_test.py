@@ -2,8 +2,8 @@
 """Through topics only: force_ramp pulls a pinned yarn until it tears; the break event's tension
 matches the closed-form breaking tension sigma_b * pi * r^2 from this test's own config (2 %), and
 force_ramp then ends; /diagnostics counts the step after the tear as taken in substeps (the
-recoil, README departure 7); ~get_break_events returns the published event, numbered 0, and
-~reset clears its log."""
+recoil, doc/method.md, "Recoil substeps"); ~get_break_events returns the published event,
+numbered 0, and ~reset clears its log."""
 import math
 import unittest
 

@@ -22,5 +22,24 @@ class ExitOnInterrupt {
   struct sigaction previous_terminate_ {};  ///< SIGTERM handler before construction
 };
 
+/// While alive, SIGINT and SIGTERM ask the node to shut down (ros::requestShutdown(), as roscpp's
+/// own SIGINT handler does) and, should it still be running `deadline` [s] later
+/// (a step that costs more than that checks no ROS flag), end the process then with status
+/// 128 + the signal and one line on stderr. A node stepping normally ends within one stepping
+/// cycle, and the exit falls back to the deadline only inside a step that long. The handlers
+/// found at construction are restored, and a pending deadline cancelled, on destruction.
+class ShutdownOnInterrupt {
+ public:
+  explicit ShutdownOnInterrupt(double deadline);
+  ~ShutdownOnInterrupt();
+  ShutdownOnInterrupt(const ShutdownOnInterrupt&) = delete;
+  ShutdownOnInterrupt& operator=(const ShutdownOnInterrupt&) = delete;
+
+ private:
+  struct sigaction previous_interrupt_ {};  ///< SIGINT handler before construction
+  struct sigaction previous_terminate_ {};  ///< SIGTERM handler before construction
+  struct sigaction previous_alarm_ {};      ///< SIGALRM handler before construction
+};
+
 }  // namespace ros_layer
 }  // namespace yarn_tearing

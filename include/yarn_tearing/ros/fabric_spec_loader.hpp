@@ -6,7 +6,7 @@
 namespace yarn_tearing {
 namespace ros_layer {
 
-/// Reads one entry of ~fabrics (README, "Fabric parameters"):
+/// Reads one entry of ~fabrics (doc/node.md, "Fabrics"):
 /// {name, weave ('plain'), warp_length [m], weft_length [m], ends, picks, origin [m],
 ///  warp_direction, weft_direction, warp {yarn keys of loadYarnMaking}, weft {...},
 ///  warp_crimp [-], weft_crimp [-], shear_rigidity [N/m], pinned [[row, column], ...],

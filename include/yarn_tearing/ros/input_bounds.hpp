@@ -7,8 +7,8 @@
 namespace yarn_tearing {
 namespace ros_layer {
 
-/// Physical bounds on what clients send on topics (README, "Bad input"): past them a message is
-/// refused, so nothing from outside can overflow the simulation.
+/// Physical bounds on what clients send on topics (doc/node.md, "Bad input"): past them a message
+/// is refused, so nothing from outside can overflow the simulation.
 namespace input_bounds {
 
 constexpr double kMaxForce = 1.0e6;         ///< |applied force| [N]

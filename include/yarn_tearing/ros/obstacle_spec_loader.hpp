@@ -22,7 +22,7 @@ struct ObstacleSpec {
   bool attached() const { return !attached_frame.empty(); }
 };
 
-/// Reads one entry of ~obstacles (README, "Obstacles"):
+/// Reads one entry of ~obstacles (doc/node.md, "Obstacles"):
 /// {name, shape (plane | box | sphere | capsule), half_extents [m] (box), radius [m] (sphere,
 ///  capsule), half_length [m] (capsule), friction [-], position [m], rpy [rad], attached_frame}.
 /// `position` and `rpy` (R = Rz(yaw) Ry(pitch) Rx(roll), as scripts/static_frame) place the

@@ -7,7 +7,7 @@
 namespace yarn_tearing {
 namespace ros_layer {
 
-/// Physical bounds on the node's parameters (README, "Bad input"): what the simulation can
+/// Physical bounds on the node's parameters (doc/node.md, "Bad input"): what the simulation can
 /// represent in double precision with room to spare. A parameter past one stops the node at start,
 /// naming the parameter and the bound.
 namespace parameter_bounds {
@@ -31,6 +31,9 @@ constexpr double kMinDirection = 1.0e-6;      ///< |direction| [-]
 constexpr double kMaxDirection = 1.0e6;       ///< |direction| [-]
 constexpr double kMaxWeibullModulus = 1.0e3;  ///< weibull_modulus [-] (0 = none, else >= 1)
 constexpr double kMaxFrameTimeout = 1.0e6;    ///< frame_timeout [s]
+constexpr double kMaxRealTimeFactor = 1.0e3;  ///< real_time_factor [-] (0 = as fast as possible)
+constexpr double kMinPublishRate = 1.0e-3;    ///< publish_rate [Hz]
+constexpr double kMaxPublishRate = 1.0e3;     ///< publish_rate [Hz]
 constexpr double kMaxExtrapolation = 10.0;    ///< max_extrapolation [s]
 constexpr int kMaxYarnVertices = 100000;     ///< num_vertices of one yarn (ends, picks of a fabric)
 constexpr double kMaxShearRigidity = 1.0e6;  ///< a fabric's shear_rigidity [N/m]

@@ -455,9 +455,9 @@ bool StiffNewtonStep::hasFriction(const Contact& c) { return c.friction > 0.0 &&
 void StiffNewtonStep::slideAlongSlip(std::size_t i, Contact& c,
                                      const std::vector<Eigen::Vector3d>& position,
                                      const Eigen::Vector3d& move) {
-  // Pushing without friction instead (as before) let a wrap sliding by 0.4 chord per step at
+  // Pushing without friction instead would let a wrap sliding by 0.4 chord per step at
   // dt 1e-4 keep its energy: the points that take over the push as the chords pass the post
-  // are those that flip, and they went frictionless (kinetic energy up to 2.2x the capstan
+  // are those that flip, and frictionless they would let its kinetic energy up to 2.2x the capstan
   // law's bound). Along a tangent that carries less than kSlideShare of the slip, none.
   slide_only_[i] = 1;
   const Eigen::Vector3d slip = c.point(position) + move - c.anchor();

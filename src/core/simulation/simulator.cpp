@@ -15,8 +15,9 @@ namespace yarn_tearing {
 namespace {
 
 /// After a tear's pieces have unloaded, each substep of the rest of the step is this many times
-/// the last [-] (about log4(recoil_substeps) substeps to the step's end; 2 took 9 substeps and
-/// 28 Newton steps after a tear of the 16 x 16 trouser tear, 4 takes 6 and 21, 8 5 and 20).
+/// the last [-] (about log4(recoil_substeps) substeps to the step's end): few substeps, yet a
+/// growth slow enough for the Newton steps of a still-recoiling piece to converge
+/// (doc/method.md, "Recoil substeps").
 constexpr double kRecoilGrowth = 4.0;
 
 void requireVertex(const Scene& scene, std::uint32_t vertex) {

@@ -79,6 +79,14 @@ TEST(ObstacleSpecLoader, AnAttachedObstacleKeepsItsPoseAsAnOffset) {
   EXPECT_DOUBLE_EQ(spec.obstacle.edge_radius, 0.0);  // default: sharp
 }
 
+TEST(ObstacleSpecLoader, AnEmptyAttachedFrameIsAFixedObstacle) {
+  XmlRpc::XmlRpcValue obstacle = capsule();
+  obstacle["attached_frame"] = "";  // the documented default
+  const ObstacleSpec spec = loadObstacleSpec(param(obstacle));
+  EXPECT_FALSE(spec.attached());
+  EXPECT_TRUE(spec.obstacle.pose.translation().isApprox(Eigen::Vector3d(0.0, 0.1, 0.5)));
+}
+
 /// A box of half sizes (0.02, 0.03, 0.04) [m] with edges rounded to `edge_radius` [m].
 XmlRpc::XmlRpcValue boxWithEdgeRadius(double edge_radius) {
   XmlRpc::XmlRpcValue obstacle;

@@ -134,6 +134,44 @@ TEST(MarkerBuilder, StableIdsAndOneDeleteAllOnly) {
             visualization_msgs::Marker::DELETE);
 }
 
+/// The fabric's shaded faces (its TRIANGLE_LIST marker) among a scene's markers.
+visualization_msgs::Marker fabricMesh(const Simulator& simulator) {
+  MarkerBuilder builder("world", 1.0e-3);
+  for (const visualization_msgs::Marker& marker :
+       builder.build(simulator.scene(), ros::Time(1.0)).markers) {
+    if (marker.type == visualization_msgs::Marker::TRIANGLE_LIST) return marker;
+  }
+  ADD_FAILURE() << "no TRIANGLE_LIST marker";
+  return {};
+}
+
+TEST(MarkerBuilder, FabricMeshLooksTheSameFromEitherSide) {
+  FabricSpec fabric;
+  fabric.name = "patch";
+  fabric.ends = 3;
+  fabric.picks = 3;
+  const visualization_msgs::Marker front =
+      fabricMesh(Simulator(SimulationParameters{}, {}, {fabric}));
+  ASSERT_EQ(front.points.size(), 2U * 2U * 6U);  // 2 x 2 cells, two triangles each
+  // One colour per point: RViz then draws the triangles unlit, the same from both sides.
+  ASSERT_EQ(front.colors.size(), front.points.size());
+  for (const std_msgs::ColorRGBA& color : front.colors) {
+    EXPECT_GT(color.r, 0.3F);
+    EXPECT_LE(color.r, 1.0F);
+    EXPECT_EQ(color.a, 1.0F);
+  }
+  // The same patch turned over (its weft reversed, so every triangle's normal too) is shaded alike.
+  FabricSpec flipped = fabric;
+  flipped.origin = fabric.origin + fabric.weft_length * fabric.weft_direction;
+  flipped.weft_direction = -fabric.weft_direction;
+  const visualization_msgs::Marker back =
+      fabricMesh(Simulator(SimulationParameters{}, {}, {flipped}));
+  ASSERT_EQ(back.colors.size(), front.colors.size());
+  for (std::size_t i = 0; i < front.colors.size(); ++i) {
+    EXPECT_FLOAT_EQ(back.colors[i].r, front.colors[i].r) << "point " << i;
+  }
+}
+
 TEST(MessageConversion, UsesPerYarnLocalIndices) {
   Simulator simulator(SimulationParameters{}, twoYarns());
   simulator.step();

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "xmlrpc_builders.hpp"
+#include "yarn_tearing/ros/fabric_spec_loader.hpp"
 #include "yarn_tearing/ros/material_loader.hpp"
 #include "yarn_tearing/ros/param_value.hpp"
 #include "yarn_tearing/ros/parameter_error.hpp"
@@ -105,8 +106,8 @@ TEST(YarnSpecLoader, ErrorNamesParameterValueAndAllowedRange) {
   EXPECT_NE(error.find("in [1e-07, 1] [m]"), std::string::npos) << error;
 }
 
-/// The eight parameter values that passed validation and poisoned the state: each is
-/// refused naming its parameter and the bound.
+/// Eight parameter values inside the type's range but past the physical bounds, each of which
+/// would poison the state: each is refused naming its parameter and the bound.
 TEST(YarnSpecLoader, RefusesValuesPastThePhysicalBounds) {
   const std::vector<std::pair<std::string, XmlRpc::XmlRpcValue>> cases = {
       {"radius", 1.0e-200},
@@ -300,6 +301,41 @@ TEST(ParamValue, RejectsNonFiniteNumbers) {
                ParameterError);
   EXPECT_THROW(ParamValue("/x", std::nan("")).number(0.0, 1.0, ""), ParameterError);
   EXPECT_DOUBLE_EQ(ParamValue("/x", 0.5).number(0.0, 1.0, ""), 0.5);
+}
+
+/// A fabric near the 1e4 m bound: origin (0, 9990, 0) [m], weft 20 m along +y, warp 30 m along
+/// (1, -1, 0): its far corner is within the bound, its weft corner (0, 10010, 0) is not.
+XmlRpc::XmlRpcValue fabricWithAFarCorner() {
+  XmlRpc::XmlRpcValue family;
+  family["material"] = testing::inlineMaterial();
+  family["radius"] = 1.0e-4;
+  XmlRpc::XmlRpcValue fabric;
+  fabric["name"] = "patch";
+  fabric["warp_length"] = 30.0;
+  fabric["weft_length"] = 20.0;
+  fabric["ends"] = 4;
+  fabric["picks"] = 4;
+  fabric["origin"] = list({0.0, 9990.0, 0.0});
+  fabric["warp_direction"] = list({1.0, -1.0, 0.0});
+  fabric["weft_direction"] = list({0.0, 1.0, 0.0});
+  fabric["warp"] = family;
+  fabric["weft"] = family;
+  return fabric;
+}
+
+TEST(FabricSpecLoader, EveryCornerMustLieWithinTheBound) {
+  const XmlRpc::XmlRpcValue fabric = fabricWithAFarCorner();
+  std::string error;
+  try {
+    loadFabricSpec(ParamValue("/node/fabrics[0]", fabric), kNoPresets);
+  } catch (const ParameterError& e) {
+    error = e.what();
+  }
+  EXPECT_NE(error.find("/node/fabrics[0].warp_length"), std::string::npos) << error;
+  EXPECT_NE(error.find("every corner"), std::string::npos) << error;
+  XmlRpc::XmlRpcValue inside = fabric;
+  inside["weft_length"] = 5.0;  // weft corner (0, 9995, 0)
+  EXPECT_NO_THROW(loadFabricSpec(ParamValue("/node/fabrics[0]", inside), kNoPresets));
 }
 
 }  // namespace

@@ -4,8 +4,8 @@
 
 namespace yarn_tearing {
 
-/// A box's edges and corners as a yarn's contact sees them (departure 12 in the README). A chain
-/// of straight segments bent over a sharp edge turns at one vertex and cogs there: its two
+/// A box's edges and corners as a yarn's contact sees them (doc/method.md, "Rounded box edges"). A
+/// chain of straight segments bent over a sharp edge turns at one vertex and cogs there: its two
 /// chords' pushes balance tension ratios up to 1/cos(theta) without any friction. Rounded to a
 /// radius the mesh resolves, the bend spreads over several chords and a frictionless edge passes
 /// the tension on, as a capstan post does. The yarn's centre line then stays on a fillet of

@@ -35,8 +35,8 @@ struct TrouserTearResult {
   std::vector<TearEvent> events;         ///< every segment torn, in order
   /// The force's peak before each tear [N]: its largest value in the steps after the previous
   /// step with a tear (or the start) and before the next one; none where two steps tear in a row
-  /// (a tear's own step is left out: its grips' forces include the length stop's, README
-  /// departure 5).
+  /// (a tear's own step is left out: its grips' forces include the length stop's,
+  /// doc/method.md, "Breaking-length stop").
   std::vector<double> peaks;
   double mean_peak = 0.0;    ///< mean of `peaks` [N] (0 when nothing tore)
   double peak_spread = 0.0;  ///< sample standard deviation of `peaks` [N] (0 below two peaks)

@@ -15,13 +15,8 @@ namespace yarn_tearing {
 /// columns of L of the squared nonzeros below the diagonal) with the kernel in use; where it
 /// has crossed to the other kernel's side (kSupernodalCost, kSimplicialCost: apart, so that a
 /// cost near them does not switch back and forth), the other kernel analyses it again and is
-/// used from then on.
-///
-/// Measured on dumped Newton-step systems of the trouser tear (factorization, analysis, one
-/// solve; 2-core AMD EPYC, GCC 12 -O3): 64 x 64 (19,827 rows, cost 1.6e7) supernodal 3.2, 2.3,
-/// 0.43 ms against simplicial 5.5, 1.4, 0.39 ms; 32 x 32 (4,795 rows, cost 1.2e6) 0.58, 0.65,
-/// 0.096 ms against 0.65, 0.31, 0.077 ms; the hanging 64 x 64 fabric's edge Gram matrix (8,064
-/// rows, cost 9e5) 0.29, 0.42, 0.084 ms against 0.25, 0.17, 0.066 ms.
+/// used from then on. The supernodal analysis costs more than the simplicial one, so it pays
+/// only on large factors (doc/performance.md, "Factorization kernels").
 class SparseLdlt {
  public:
   /// Analyses `upper`'s pattern (square, compressed, entries on and above the diagonal); false
@@ -38,8 +33,8 @@ class SparseLdlt {
 
   /// Factor cost (multiply-adds, the sum over the columns of L of the squared nonzeros below
   /// the diagonal) from which the simplicial kernel hands over to the supernodal one [-]:
-  /// between the 32 x 32 and the 64 x 64 trouser tear's Newton systems (1.2e6 and 1.6e7), where
-  /// it is slower and 1.7 times faster per factorization.
+  /// between the 32 x 32 and the 64 x 64 trouser tear's Newton systems, where it is slower and
+  /// faster per factorization.
   static constexpr double kSupernodalCost = 4e6;
   /// Factor cost below which the supernodal kernel hands back to the simplicial one [-].
   static constexpr double kSimplicialCost = 2e6;

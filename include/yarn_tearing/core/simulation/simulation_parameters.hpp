@@ -27,11 +27,11 @@ enum class TensionRowWeighting {
 
 /// Where each edge's tension (stage 4) comes from.
 enum class TensionSource {
-  /// The force of the compliant length constraint (departure 6 of the README): the tension of the
-  /// stiff spring, compliance c = L0 / (E A), at the length the step ends with. This is the exact
-  /// solution of the paper's least squares whenever the vertices' motion determines the tensions,
-  /// and it stays right where the motion does not: a span between two holders, whose common
-  /// tension moves no free vertex.
+  /// The force of the compliant length constraint (doc/method.md, "Tension from the constraint
+  /// force"): the tension of the stiff spring, compliance c = L0 / (E A), at the length the step
+  /// ends with. This is the exact solution of the paper's least squares whenever the vertices'
+  /// motion determines the tensions, and it stays right where the motion does not: a span
+  /// between two holders, whose common tension moves no free vertex.
   kConstraintForce,
   /// The paper's §3.2 estimate: the regularized least squares over the free vertices' motion,
   /// anchored at the constraint force. Ill-posed for a span held at both ends (its common tension

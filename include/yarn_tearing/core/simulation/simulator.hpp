@@ -101,8 +101,8 @@ class Simulator {
   /// One step of `time_step` in substeps of time_step / recoil_substeps, kinematic vertices moved
   /// linearly to their targets; lastHealth() is the worst of the substeps'. With `recoil` (the
   /// step after a tear) only while a torn piece is still unloading (Tearing::unloadingEnd());
-  /// the rest of the step is then one substep, or fine substeps again if that one does not
-  /// converge (README, departure 7).
+  /// the rest of the step is then taken in substeps growing in length, or in fine substeps again
+  /// if one of those does not converge (doc/method.md, "Recoil substeps").
   void advanceInSubsteps(bool recoil);
   /// Moves the kinematic vertices' targets to `fraction` [-] of the way from the step's start.
   void setSubstepTargets(double fraction);
