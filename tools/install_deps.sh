@@ -16,7 +16,7 @@ packages=(
   # messages, services, tf2, diagnostics
   libgeometry-msgs-dev python3-geometry-msgs libstd-msgs-dev python3-std-msgs
   libvisualization-msgs-dev python3-visualization-msgs libstd-srvs-dev python3-std-srvs
-  libros-rosgraph-msgs-dev python3-rosgraph-msgs libtf2-dev libtf2-ros-dev python3-tf2-ros
+  libros-rosgraph-msgs-dev python3-rosgraph-msgs libtf2-dev libtf2-msgs-dev libtf2-ros-dev python3-tf2-ros
   libdiagnostic-updater-dev python3-diagnostic-msgs
   # nodelet (the library, its headers, the `nodelet` manager/loader executable)
   libnodelet-dev libnodeletlib-dev libnodeletlib-tools python3-nodelet

@@ -9,6 +9,8 @@
 #   6. tensile_test: a quick virtual tensile test of a few specimens (python unittest)
 #   7. catkin_lint of the package (tools/check_catkin_lint.sh)
 #   8. install space and downstream C++ use (tools/test_install.sh)
+#   9. report only (never fails the run): the node's achieved real-time factor and dropped steps
+#      in the table drag (tools/measure_table_drag.sh, at most 2 minutes)
 # Ends with each stage's wall time and the ten slowest tests (tools/slowest_tests.py).
 set -euo pipefail
 
@@ -37,6 +39,8 @@ run_logged tensile /usr/bin/python3 -m unittest discover -s "${repo}/test/tensil
   -t "${repo}/test/tensile"
 run_logged lint bash "${repo}/tools/check_catkin_lint.sh"
 run_logged install bash "${repo}/tools/test_install.sh"
+run_logged measure_table_drag timeout --kill-after=10 120 bash "${repo}/tools/measure_table_drag.sh" \
+  || echo "measure_table_drag: no figures (see ${logs}/measure_table_drag.log)"
 
 # One closing line over all suites (each suite above already failed the run if it failed).
 core_total=$(grep -ho "tests failed out of [0-9]*" "${logs}/core.log" | awk '{s += $5} END {print s + 0}')

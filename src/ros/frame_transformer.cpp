@@ -34,11 +34,22 @@ Eigen::Vector3d boundedOrigin(const std::string& frame, const geometry_msgs::Vec
   return origin;
 }
 
+/// tf's `transform` of `frame` as a pose; InputRejected as rotationOf() and boundedOrigin().
+Eigen::Isometry3d poseOf(const std::string& frame, const geometry_msgs::Transform& transform) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = rotationOf(frame, transform.rotation).toRotationMatrix();
+  pose.translation() = boundedOrigin(frame, transform.translation);
+  return pose;
+}
+
 }  // namespace
 
 FrameTransformer::FrameTransformer(const tf2_ros::Buffer& buffer, std::string fixed_frame,
-                                   double frame_timeout)
-    : buffer_(buffer), fixed_frame_(std::move(fixed_frame)), frame_timeout_(frame_timeout) {}
+                                   double frame_timeout, double max_extrapolation)
+    : buffer_(buffer),
+      fixed_frame_(std::move(fixed_frame)),
+      frame_timeout_(frame_timeout),
+      max_extrapolation_(max_extrapolation) {}
 
 geometry_msgs::TransformStamped FrameTransformer::lookup(const std::string& frame,
                                                          const ros::Time& stamp) const {
@@ -54,10 +65,16 @@ geometry_msgs::TransformStamped FrameTransformer::lookup(const std::string& fram
     throw InputRejected(RefusalReason::kUnknownFrame, "cannot look up frame '" + clipped(frame) +
                                                           "' in '" + fixed_frame_ +
                                                           "': " + clipped(e.what(), kMaxTfReason));
+  } catch (const std::exception& e) {  // ROS time arithmetic on a stamp past its range
+    throw InputRejected(RefusalReason::kTimeOutOfRange,
+                        "cannot look up frame '" + clipped(frame) + "' in '" + fixed_frame_ +
+                            "' at " + std::to_string(stamp.toSec()) +
+                            " s: " + clipped(e.what(), kMaxTfReason));
   }
   const ros::Time updated = transform.header.stamp;
   if (stamp.isZero() && frame_timeout_ > 0.0 && !updated.isZero()) {
-    const double age = (ros::Time::now() - updated).toSec();
+    // in seconds, not ros::Duration: a stamp far from now is out of a Duration's range
+    const double age = ros::Time::now().toSec() - updated.toSec();
     if (age > frame_timeout_) {
       std::ostringstream text;
       text << "frame '" << clipped(frame) << "' last updated " << age << " s ago (frame_timeout "
@@ -77,22 +94,40 @@ Eigen::Vector3d FrameTransformer::rotateToFixedFrame(const Eigen::Vector3d& vect
   return rotationOf(frame, lookup(frame, stamp).transform.rotation) * vector;
 }
 
-Eigen::Vector3d FrameTransformer::originInFixedFrame(const std::string& frame) const {
+FrameMotion FrameTransformer::motionOf(const std::string& frame) const {
   if (frame == fixed_frame_) {
-    return Eigen::Vector3d::Zero();
+    return FrameMotion::still(Eigen::Isometry3d::Identity());
   }
-  return boundedOrigin(frame, lookup(frame, ros::Time(0)).transform.translation);
+  const geometry_msgs::TransformStamped latest = lookup(frame, ros::Time(0));
+  FrameMotion motion = FrameMotion::still(poseOf(frame, latest.transform));
+  const double latest_time = latest.header.stamp.toSec();
+  motion.time = latest_time;
+  if (latest.header.stamp.isZero() || latest_time <= kVelocityWindow) {
+    return motion;  // static (or stamped at the very start of ROS time): stands still
+  }
+  try {
+    const ros::Time earlier_stamp(latest_time - kVelocityWindow);
+    const Eigen::Isometry3d earlier = poseOf(frame, lookup(frame, earlier_stamp).transform);
+    return FrameMotion::between(earlier, earlier_stamp.toSec(), motion.pose, latest_time);
+  } catch (const InputRejected&) {
+    return motion;  // a single sample so far (nothing before it to measure a velocity over)
+  }
 }
 
-Eigen::Isometry3d FrameTransformer::poseInFixedFrame(const std::string& frame) const {
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  if (frame == fixed_frame_) {
-    return pose;
+Eigen::Isometry3d FrameTransformer::poseAt(const std::string& frame, const FrameMotion& motion,
+                                           const ros::Time& stamp) const {
+  const double time = stamp.toSec();
+  if (!motion.moving) {
+    return motion.pose;
   }
-  const geometry_msgs::Transform transform = lookup(frame, ros::Time(0)).transform;
-  pose.linear() = rotationOf(frame, transform.rotation).toRotationMatrix();
-  pose.translation() = boundedOrigin(frame, transform.translation);
-  return pose;
+  if (time > motion.time) {
+    return motion.extrapolated(time, max_extrapolation_);
+  }
+  try {
+    return poseOf(frame, lookup(frame, stamp).transform);
+  } catch (const InputRejected&) {
+    return motion.pose;  // older than tf2's cache
+  }
 }
 
 }  // namespace ros_layer

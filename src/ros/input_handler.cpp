@@ -43,9 +43,8 @@ InputHandler::InputHandler(const FrameTransformer& frames)
       target_warnings_(kWarnPeriod, static_cast<std::size_t>(RefusalReason::kCount)) {}
 
 Eigen::Vector3d InputHandler::ActiveForce::at(double time) const {
-  const double elapsed =
-      std::clamp(std::min(time, ramp_end) - start, 0.0, input_bounds::kMaxDuration);
-  const Eigen::Vector3d value = force + elapsed * rate;
+  const Eigen::Vector3d value =
+      rampedValue(force, rate, start, ramp_end, time, input_bounds::kMaxDuration);
   const double norm = value.norm();
   return norm > input_bounds::kMaxForce ? Eigen::Vector3d(value * (input_bounds::kMaxForce / norm))
                                         : value;
@@ -86,19 +85,25 @@ void InputHandler::handleGrasp(const Grasp& msg, Simulator& simulator) {
   if (msg.target_frame.empty()) {
     throw InputRejected(RefusalReason::kUnknownFrame, "target_frame is empty");
   }
+  requireBoundedVector(toEigen(msg.velocity), input_bounds::kMaxSpeed, "velocity", "m/s");
+  requireDuration(msg.motion_duration, "motion_duration");
   GraspTarget target;
-  target.frame = msg.target_frame;
   target.label = VertexAddress::of(msg).describe() + " of '" + clipped(msg.yarn) + "'";
-  target.to = frames_.originInFixedFrame(msg.target_frame);
+  target.follower = FrameFollower(msg.target_frame, frames_.motionOf(msg.target_frame));
+  target.velocity =
+      frames_.rotateToFixedFrame(toEigen(msg.velocity), msg.header.frame_id, msg.header.stamp);
+  target.motion_start = simulator.time();
+  target.motion_end = endAfter(target.motion_start, msg.motion_duration);
   const auto existing = grasps_.find(vertex);
   const Eigen::Vector3d& position = simulator.scene().vertices.position[vertex];
+  const Eigen::Vector3d frame_origin = target.follower.pose().translation();
   if (existing != grasps_.end()) {
-    target.from = existing->second.to;
+    // a re-grasp starts where the previous target was, the frame's motion then takes over
+    target.start_offset = existing->second.last_target - frame_origin;
   } else if (position.norm() <= input_bounds::kMaxDistance) {
-    target.from = position;
-  } else {
-    target.from = target.to;  // a fragment flown far away jumps, the interpolation stays bounded
-  }
+    target.start_offset = position - frame_origin;
+  }  // else a fragment flown far away jumps, the blend stays bounded
+  target.last_target = frame_origin + target.start_offset;
   grasps_[vertex] = target;
 }
 
@@ -106,19 +111,19 @@ void InputHandler::beginCycle() {
   for (auto& entry : grasps_) {
     GraspTarget& target = entry.second;
     if (target.fresh) {
-      target.fresh = false;
-      continue;
+      target.fresh = false;  // this cycle blends from where the vertex was
+    } else {
+      target.start_offset.setZero();
     }
-    target.from = target.to;
     try {
-      target.to = frames_.originInFixedFrame(target.frame);
+      target.follower.refresh(frames_);
       if (target.stale) {
         ROS_INFO("grasp of %s: frame '%s' is updated again", target.label.c_str(),
-                 target.frame.c_str());
+                 target.follower.frame().c_str());
         target.stale = false;
       }
     } catch (const InputRejected& e) {
-      reportHeldTarget(target, e);
+      reportHeldTarget(target, e);  // the follower stands where the frame was at the last step
     }
   }
 }
@@ -139,8 +144,9 @@ void InputHandler::reportHeldTarget(GraspTarget& target, const InputRejected& e)
   }
 }
 
-void InputHandler::beforeStep(Simulator& simulator, double fraction) {
+void InputHandler::beforeStep(Simulator& simulator, double fraction, const ros::Time& step_end) {
   const double now = simulator.time();
+  const double end = now + simulator.parameters().time_step;
   for (auto it = forces_.begin(); it != forces_.end();) {
     if (now >= it->second.expiry) {
       simulator.setAppliedForce(it->first, Eigen::Vector3d::Zero());
@@ -150,15 +156,31 @@ void InputHandler::beforeStep(Simulator& simulator, double fraction) {
       ++it;
     }
   }
-  for (const auto& [vertex, target] : grasps_) {
-    simulator.setKinematicTarget(vertex, target.from + fraction * (target.to - target.from));
+  for (auto& [vertex, target] : grasps_) {
+    const Eigen::Vector3d scripted =
+        rampedValue(Eigen::Vector3d::Zero(), target.velocity, target.motion_start,
+                    target.motion_end, end, input_bounds::kMaxDuration);
+    Eigen::Vector3d goal = target.follower.poseAt(frames_, step_end).translation() + scripted +
+                           (1.0 - fraction) * target.start_offset;
+    const double distance = goal.norm();
+    if (distance > input_bounds::kMaxDistance) {
+      goal *= input_bounds::kMaxDistance / distance;  // a scripted motion run past the bound
+    }
+    target.last_target = goal;
+    simulator.setKinematicTarget(vertex, goal);
   }
+}
+
+bool InputHandler::outrunsFrames(const ros::Time& step_end) const {
+  return std::any_of(grasps_.begin(), grasps_.end(), [&](const auto& entry) {
+    return entry.second.follower.outruns(frames_, step_end);
+  });
 }
 
 std::map<std::uint32_t, std::string> InputHandler::graspFrames() const {
   std::map<std::uint32_t, std::string> frames;
   for (const auto& [vertex, target] : grasps_) {
-    frames.emplace(vertex, target.frame);
+    frames.emplace(vertex, target.follower.frame());
   }
   return frames;
 }

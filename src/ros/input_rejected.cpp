@@ -19,6 +19,10 @@ const char* reasonName(RefusalReason reason) {
       return "stale frame";
     case RefusalReason::kNotGrasped:
       return "not grasped";
+    case RefusalReason::kTimeOutOfRange:
+      return "time out of range";
+    case RefusalReason::kUnexpected:
+      return "unexpected error";
     case RefusalReason::kCount:
       break;
   }

@@ -3,6 +3,7 @@
 #include <ros/console.h>
 #include <ros/time.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "yarn_tearing/ros/input_bounds.hpp"
@@ -13,17 +14,6 @@ namespace {
 
 constexpr double kWarnPeriod = 2.0;  ///< [s] between repeated warnings of one reason
 
-/// The pose `fraction` (0..1) of the way from `from` to `to`: position linear, rotation slerp.
-Eigen::Isometry3d interpolate(const Eigen::Isometry3d& from, const Eigen::Isometry3d& to,
-                              double fraction) {
-  const Eigen::Quaterniond a(from.linear());
-  const Eigen::Quaterniond b(to.linear());
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = a.slerp(fraction, b).normalized().toRotationMatrix();
-  pose.translation() = from.translation() + fraction * (to.translation() - from.translation());
-  return pose;
-}
-
 }  // namespace
 
 ObstacleTracker::ObstacleTracker(const FrameTransformer& frames, std::vector<ObstacleSpec> specs,
@@ -31,7 +21,7 @@ ObstacleTracker::ObstacleTracker(const FrameTransformer& frames, std::vector<Obs
     : frames_(frames), warnings_(kWarnPeriod, static_cast<std::size_t>(RefusalReason::kCount)) {
   for (ObstacleSpec& spec : specs) {
     Tracked tracked;
-    tracked.to = tracked.from = spec.obstacle.pose;
+    tracked.follower = FrameFollower(spec.attached_frame, FrameMotion::still(spec.obstacle.pose));
     tracked.placed = !spec.attached();
     tracked.spec = std::move(spec);
     tracked_.push_back(std::move(tracked));
@@ -49,9 +39,7 @@ void ObstacleTracker::beginCycle(Simulator& simulator) {
   bool joined = false;
   for (Tracked& tracked : tracked_) {
     if (!tracked.spec.attached()) continue;
-    tracked.from = tracked.to;
     if (lookUp(tracked) && !tracked.placed) {
-      tracked.from = tracked.to;
       tracked.placed = true;
       joined = true;
     }
@@ -61,8 +49,8 @@ void ObstacleTracker::beginCycle(Simulator& simulator) {
 
 bool ObstacleTracker::lookUp(Tracked& tracked) {
   try {
-    const Eigen::Isometry3d pose =
-        frames_.poseInFixedFrame(tracked.spec.attached_frame) * tracked.spec.offset;
+    const FrameMotion motion = frames_.motionOf(tracked.spec.attached_frame);
+    const Eigen::Isometry3d pose = motion.pose * tracked.spec.offset;
     requireBoundedVector(pose.translation(), input_bounds::kMaxDistance,
                          "obstacle '" + tracked.spec.obstacle.name + "' (frame + offset)", "m");
     Obstacle moved = tracked.spec.obstacle;
@@ -72,8 +60,9 @@ bool ObstacleTracker::lookUp(Tracked& tracked) {
     } catch (const std::invalid_argument& invalid) {
       throw InputRejected(RefusalReason::kOutOfBounds, invalid.what());
     }
-    tracked.to = pose;
+    tracked.follower.follow(frames_, motion);
   } catch (const InputRejected& e) {
+    tracked.follower.hold();  // where the frame was at the last step
     warnLookupFailed(tracked, e);
     return false;
   }
@@ -101,18 +90,24 @@ void ObstacleTracker::placeInSimulator(Simulator& simulator) {
     tracked.index = tracked.placed ? static_cast<int>(placed.size()) : -1;
     if (!tracked.placed) continue;
     placed.push_back(tracked.spec.obstacle);
-    placed.back().pose = tracked.to;
+    if (tracked.spec.attached()) placed.back().pose = tracked.follower.pose() * tracked.spec.offset;
   }
   simulator.setObstacles(placed);  // every pose was validated (lookUp) or loaded valid
 }
 
-void ObstacleTracker::beforeStep(Simulator& simulator, double fraction) {
-  for (const Tracked& tracked : tracked_) {
+bool ObstacleTracker::outrunsFrames(const ros::Time& step_end) const {
+  return std::any_of(tracked_.begin(), tracked_.end(), [&](const Tracked& tracked) {
+    return tracked.spec.attached() && tracked.placed && tracked.follower.outruns(frames_, step_end);
+  });
+}
+
+void ObstacleTracker::beforeStep(Simulator& simulator, const ros::Time& step_end) {
+  for (Tracked& tracked : tracked_) {
     if (!tracked.spec.attached() || !tracked.placed) continue;
     try {
       simulator.setObstaclePose(static_cast<std::size_t>(tracked.index),
-                                interpolate(tracked.from, tracked.to, fraction));
-    } catch (const std::exception& e) {  // bounded, finite poses only: not expected
+                                tracked.follower.poseAt(frames_, step_end) * tracked.spec.offset);
+    } catch (const std::exception& e) {  // past the core's bounds: an extrapolation run away
       ROS_ERROR_THROTTLE(kWarnPeriod, "obstacle '%s' not moved: %s",
                          tracked.spec.obstacle.name.c_str(), e.what());
     }

@@ -97,6 +97,9 @@ NodeSettings loadNodeSettings(const PrivateParams& params) {
   params.read("frame_timeout", [&](const ParamValue& v) {
     node.frame_timeout = v.number(0.0, bounds::kMaxFrameTimeout, "s");
   });
+  params.read("max_extrapolation", [&](const ParamValue& v) {
+    node.max_extrapolation = v.number(0.0, bounds::kMaxExtrapolation, "s");
+  });
   return node;
 }
 

@@ -17,6 +17,24 @@ constexpr double kMinPeriod = 0.01;  ///< [s] shortest ~diagnostic_period honour
 
 }  // namespace
 
+const char* stageName(LoopStage stage) {
+  switch (stage) {
+    case LoopStage::kTargets:
+      return "grasp and obstacle targets";
+    case LoopStage::kPhysics:
+      return "physics step";
+    case LoopStage::kPublishing:
+      return "publishing";
+    case LoopStage::kCallbacks:
+      return "callbacks";
+    case LoopStage::kFrameWait:
+      return "waiting for tf frames";
+    case LoopStage::kCount:
+      break;
+  }
+  return "none";
+}
+
 SimulationDiagnostics::SimulationDiagnostics(const ros::NodeHandle& nh,
                                              const ros::NodeHandle& private_nh)
     : updater_(nh, private_nh), schedule_(1.0 / std::max(updater_.getPeriod(), kMinPeriod)) {
@@ -70,6 +88,15 @@ void SimulationDiagnostics::report(diagnostic_updater::DiagnosticStatusWrapper& 
     window_sim_ = pacing_.simulated_time;
   }
 
+  double busy = 0.0;  // [s] wall time of all stages
+  std::size_t costliest = 0;
+  for (std::size_t i = 0; i < stage_seconds_.size(); ++i) {
+    busy += stage_seconds_[i];
+    if (stage_seconds_[i] > stage_seconds_[costliest]) costliest = i;
+  }
+  const double share = busy > 0.0 ? stage_seconds_[costliest] / busy : 0.0;
+  const std::string costliest_name = stageName(static_cast<LoopStage>(costliest));
+
   const bool dropped = pacing_.dropped_steps > reported_dropped_;
   const bool slow = measured && !pacing_.paused && pacing_.target_real_time_factor > 0.0 &&
                     achieved_factor_ < kSlowFraction * pacing_.target_real_time_factor;
@@ -82,7 +109,11 @@ void SimulationDiagnostics::report(diagnostic_updater::DiagnosticStatusWrapper& 
   } else if (unconverged_ > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "length projection did not converge");
   } else if (dropped || slow) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "slower than real_time_factor");
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "slower than real_time_factor: " + std::to_string(pacing_.lag) + " s behind, " +
+                       costliest_name + " takes " +
+                       std::to_string(static_cast<int>(std::lround(100.0 * share))) +
+                       " % of the loop");
   } else {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, pacing_.paused ? "paused" : "running");
   }
@@ -96,6 +127,15 @@ void SimulationDiagnostics::report(diagnostic_updater::DiagnosticStatusWrapper& 
   status.add("target real-time factor", pacing_.target_real_time_factor);
   status.add("achieved real-time factor", achieved_factor_);
   status.add("dropped steps (total)", pacing_.dropped_steps);
+  status.add("lag behind schedule [s]", pacing_.lag);
+  status.add("costliest stage", busy > 0.0 ? costliest_name : std::string("none"));
+  for (std::size_t i = 0; i < stage_seconds_.size(); ++i) {
+    status.add(std::string("wall time share: ") + stageName(static_cast<LoopStage>(i)) + " [-]",
+               busy > 0.0 ? stage_seconds_[i] / busy : 0.0);
+  }
+  const double physics = stage_seconds_[static_cast<std::size_t>(LoopStage::kPhysics)];
+  status.add("mean physics step wall time [s]",
+             steps_ > 0 ? physics / static_cast<double>(steps_) : 0.0);
   status.add("active forces", pacing_.active_forces);
   status.add("active grasps", pacing_.active_grasps);
   status.add("paused", pacing_.paused);
@@ -110,6 +150,7 @@ void SimulationDiagnostics::report(diagnostic_updater::DiagnosticStatusWrapper& 
   substepped_ = 0;
   finite_ = true;
   restorations_ = 0;
+  stage_seconds_.fill(0.0);
 }
 
 }  // namespace ros_layer

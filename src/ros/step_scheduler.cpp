@@ -25,6 +25,10 @@ double StepScheduler::targetTime(double wall_now) const {
   return anchor_sim_ + (wall_now - anchor_wall_) * real_time_factor_;
 }
 
+double StepScheduler::lag(double wall_now, double sim_time) const {
+  return asFastAsPossible() ? 0.0 : std::max(0.0, targetTime(wall_now) - sim_time);
+}
+
 std::uint64_t StepScheduler::stepsDue(double wall_now, double sim_time) {
   if (asFastAsPossible()) {
     return 0;

@@ -24,6 +24,10 @@ namespace {
 constexpr double kWarnPeriod = 2.0;     ///< [s] between repeats of one refusal warning
 constexpr double kCyclePeriod = 0.005;  ///< [s] wall: longest sleep between stepping cycles
 constexpr double kStepBudget = 0.02;    ///< [s] wall: longest stepping before serving callbacks
+/// [s] wall: longest the loop waits for a newer sample of a followed frame that it would otherwise
+/// outrun (its follower would stand still); then it steps on.
+constexpr double kFrameWait = 0.5;
+constexpr double kFramePoll = 0.001;  ///< [s] wall: sleep while waiting for a frame's sample
 /// break_events must never be dropped: at least this, and at least the scene's edge count (each
 /// edge tears at most once between resets, so no burst can be longer).
 constexpr std::uint32_t kBreakQueue = 10000;
@@ -56,8 +60,9 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
       nh_(nh),
       private_nh_(private_nh),
       simulator_(config.parameters, config.yarns, config.fabrics),
-      tf_listener_(tf_buffer_),
-      frames_(tf_buffer_, config.node.frame_id, config.node.frame_timeout),
+      tf_input_(nh, tf_buffer_),
+      frames_(tf_buffer_, config.node.frame_id, config.node.frame_timeout,
+              config.node.max_extrapolation),
       inputs_(frames_),
       obstacles_(frames_, config.obstacles, simulator_),
       markers_(config.node.frame_id, config.node.marker_width),
@@ -111,14 +116,35 @@ void YarnTearingNode::run() {
   restartPacing();
   restartPublishSchedule();
   while (ros::ok() && !stop_requested_) {
+    double mark = wallSeconds();
     queue.callAvailable();
+    mark = recordStage(LoopStage::kCallbacks, mark);
     stepCycle();
-    if (!config_.node.publishesInSimulatedTime() && publish_schedule_.due(wallSeconds())) {
+    mark = wallSeconds();
+    if (!config_.node.publishesInSimulatedTime() && publish_schedule_.due(mark)) {
       publishState();
+      mark = recordStage(LoopStage::kPublishing, mark);
     }
-    diagnostics_.update(wallSeconds(), pacingStatus());
-    queue.callAvailable(ros::WallDuration(idleTimeout()));
+    diagnostics_.update(mark, pacingStatus());
+    const double idle = idleTimeout();
+    if (waiting_for_frames_) {
+      mark = wallSeconds();
+      queue.callAvailable(ros::WallDuration(idle));
+      recordStage(LoopStage::kFrameWait, mark);
+    } else if (idle > 0.0) {
+      queue.callAvailable(ros::WallDuration(idle));  // on schedule: not a cost of the loop
+    } else {
+      mark = wallSeconds();
+      queue.callAvailable();
+      recordStage(LoopStage::kCallbacks, mark);
+    }
   }
+}
+
+double YarnTearingNode::recordStage(LoopStage stage, double since) {
+  const double now = wallSeconds();
+  diagnostics_.recordStage(stage, now - since);
+  return now;
 }
 
 PacingStatus YarnTearingNode::pacingStatus() const {
@@ -129,11 +155,15 @@ PacingStatus YarnTearingNode::pacingStatus() const {
   pacing.paused = paused_;
   pacing.active_forces = inputs_.activeForces();
   pacing.active_grasps = inputs_.activeGrasps();
+  pacing.lag = paused_ ? 0.0 : scheduler_.lag(wallSeconds(), simulator_.time());
   return pacing;
 }
 
 double YarnTearingNode::idleTimeout() const {
-  if (!paused_ && scheduler_.asFastAsPossible()) {
+  if (!paused_ && waiting_for_frames_) {
+    return kFramePoll;  // tf2's listener fills the buffer from its own thread
+  }
+  if (!paused_ && (scheduler_.asFastAsPossible() || behind_)) {
     return 0.0;
   }
   if (config_.node.publishesInSimulatedTime()) {
@@ -142,33 +172,61 @@ double YarnTearingNode::idleTimeout() const {
   return std::min(kCyclePeriod, publish_schedule_.secondsUntilDue(wallSeconds()));
 }
 
+bool YarnTearingNode::waitForFrames() {
+  const ros::Time step_end = stampOf(simulator_.time() + simulator_.parameters().time_step);
+  waiting_for_frames_ = false;
+  if (!inputs_.outrunsFrames(step_end) && !obstacles_.outrunsFrames(step_end)) {
+    frame_wait_start_ = -1.0;
+    return false;
+  }
+  const double now = wallSeconds();
+  if (frame_wait_start_ < 0.0) {
+    frame_wait_start_ = now;
+  }
+  waiting_for_frames_ = now - frame_wait_start_ < kFrameWait;
+  return waiting_for_frames_;
+}
+
 void YarnTearingNode::stepCycle() {
+  behind_ = false;
+  waiting_for_frames_ = false;
   if (paused_) {
     return;
   }
+  const double targets_start = wallSeconds();
   inputs_.beginCycle();
   obstacles_.beginCycle(simulator_);
-  const double start = wallSeconds();
+  const double start = recordStage(LoopStage::kTargets, targets_start);
   if (scheduler_.asFastAsPossible()) {
     do {
+      if (waitForFrames()) break;
       stepOnce(1.0);
     } while (wallSeconds() - start < kStepBudget);
   } else {
     const std::uint64_t due = scheduler_.stepsDue(start, simulator_.time());
     for (std::uint64_t k = 1; k <= due; ++k) {
+      if (waitForFrames()) break;
       stepOnce(static_cast<double>(k) / static_cast<double>(due));
       if (wallSeconds() - start > kStepBudget) {
         break;  // the rest is caught up in the next cycles (or dropped after max_lag)
       }
     }
+    // still behind (a step costs more than its share of wall time): the loop must not idle
+    behind_ = scheduler_.lag(wallSeconds(), simulator_.time()) >= simulator_.parameters().time_step;
   }
+  const double clock_start = wallSeconds();
   publishClock();
+  recordStage(LoopStage::kPublishing, clock_start);
 }
 
 void YarnTearingNode::stepOnce(double fraction) {
-  inputs_.beforeStep(simulator_, fraction);
-  obstacles_.beforeStep(simulator_, fraction);
+  double mark = wallSeconds();
+  const ros::Time step_end = stampOf(simulator_.time() + simulator_.parameters().time_step);
+  inputs_.beforeStep(simulator_, fraction, step_end);
+  obstacles_.beforeStep(simulator_, step_end);
+  mark = recordStage(LoopStage::kTargets, mark);
   simulator_.step();
+  mark = recordStage(LoopStage::kPhysics, mark);
   diagnostics_.recordStep(simulator_.lastHealth(), simulator_.scene());
   if (!simulator_.lastHealth().restored_yarns.empty()) {
     reportRestoredYarns();
@@ -178,6 +236,7 @@ void YarnTearingNode::stepOnce(double fraction) {
     publishClock();
     publishState();
   }
+  recordStage(LoopStage::kPublishing, mark);
 }
 
 void YarnTearingNode::reportRestoredYarns() {
@@ -357,6 +416,9 @@ void YarnTearingNode::onAppliedForce(const AppliedForce::ConstPtr& msg) {
     inputs_.handleAppliedForce(*msg, simulator_);
   } catch (const InputRejected& e) {
     warnRefused(WarningSource::kAppliedForce, "applied_force", msg->vertex, e);
+  } catch (const std::exception& e) {
+    warnRefused(WarningSource::kAppliedForce, "applied_force", msg->vertex,
+                InputRejected(RefusalReason::kUnexpected, e.what()));
   }
 }
 
@@ -365,6 +427,9 @@ void YarnTearingNode::onGrasp(const Grasp::ConstPtr& msg) {
     inputs_.handleGrasp(*msg, simulator_);
   } catch (const InputRejected& e) {
     warnRefused(WarningSource::kGrasp, "grasp", msg->vertex, e);
+  } catch (const std::exception& e) {
+    warnRefused(WarningSource::kGrasp, "grasp", msg->vertex,
+                InputRejected(RefusalReason::kUnexpected, e.what()));
   }
 }
 

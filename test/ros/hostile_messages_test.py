@@ -8,7 +8,11 @@
    and grasps jump): the node stays alive, states keep their rate without NaN, every break event
    is within its yarn's breaking point, RSS grows < 5 MB.
 3. A grasp whose frame stops being updated is reported once and holds its last target; a new
-   grasp to the stale frame is refused."""
+   grasp to the stale frame is refused.
+4. Stamps at the end of ROS time (4294967295 s): an applied_force and a grasp's velocity in a
+   non-static frame at that stamp are refused, a tf sample of a non-static frame at it is refused
+   (tf2's cache arithmetic would leave ROS time's range), with a warning naming the reason; a grasp
+   on that frame is refused; the node keeps stepping."""
 import math
 import random
 import re
@@ -145,9 +149,12 @@ class HostileMessagesTest(unittest.TestCase):
         msg.yarn, msg.vertex, msg.force, msg.duration = yarn, vertex, Vector3(*f), duration
         self.force_pub.publish(msg)
 
-    def grasp(self, yarn="a", vertex=-1, frame="world", release=False):
+    def grasp(self, yarn="a", vertex=-1, frame="world", release=False, velocity=(0.0, 0.0, 0.0),
+              velocity_frame="", stamp=rospy.Time(0)):
         msg = Grasp()
         msg.yarn, msg.vertex, msg.target_frame, msg.release = yarn, vertex, frame, release
+        msg.header.frame_id, msg.header.stamp = velocity_frame, stamp
+        msg.velocity = Vector3(*velocity)
         self.grasp_pub.publish(msg)
 
     def check_states(self, start, end):
@@ -270,6 +277,40 @@ class HostileMessagesTest(unittest.TestCase):
         time.sleep(0.5)
         self.assertTrue(any("stale frame" in t for t in self.logs.texts(since=refused_since)),
                         "a new grasp to the stale frame was not refused")
+
+    def test_4_stamp_at_the_end_of_ros_time(self):
+        self.frames.moving.set()
+        time.sleep(0.5)
+        last = rospy.Time(4294967295)  # the largest stamp ROS time has
+        since = time.monotonic()
+        broadcaster = tf2_ros.TransformBroadcaster()
+        time.sleep(0.5)  # the node subscribes to the new broadcaster
+        broadcaster.sendTransform(transform("last_frame", (0.0, 0.0, -0.2), last))
+        time.sleep(0.2)
+        for _ in range(3):
+            self.force("b", -1, (0.0, 0.0, -0.01), "moving_frame", 0.0, last)
+            self.grasp("b", 3, "ok_frame", velocity=(0.01, 0.0, 0.0),
+                       velocity_frame="moving_frame", stamp=last)
+            time.sleep(0.1)
+        self.grasp("a", 4, "last_frame")
+        time.sleep(1.5)
+        self.assertEqual(node_pid(), self.pid, "the node restarted or died")
+        self.check_states(since + 0.5, time.monotonic())
+        texts = self.logs.texts(since=since)
+        for topic in ("applied_force", "grasp"):
+            refusals = [t for t in texts if t.startswith(topic + " refused") and
+                        "moving_frame" in t]
+            self.assertTrue(refusals, "%s at stamp %d s not refused: %r" %
+                            (topic, last.secs, texts))
+            self.assertLessEqual(len(refusals), 1, "not throttled: %r" % refusals)
+            self.assertIsNotNone(warning_key(refusals[0]), refusals[0])
+        tf_refusals = [t for t in texts if t.startswith("tf refused") and "last_frame" in t]
+        self.assertEqual(len(tf_refusals), 1, "tf at stamp %d s: %r" % (last.secs, texts))
+        self.assertIn("time out of range", tf_refusals[0])
+        yarn = support.find_yarn(self.states.latest(), "b")
+        self.assertNotIn(3, list(yarn.support_vertices), "the refused grasp was taken")
+        yarn = support.find_yarn(self.states.latest(), "a")
+        self.assertNotIn(4, list(yarn.support_vertices), "a grasp on the refused frame was taken")
 
 
 if __name__ == "__main__":

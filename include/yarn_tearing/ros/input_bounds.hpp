@@ -15,6 +15,7 @@ constexpr double kMaxForce = 1.0e6;         ///< |applied force| [N]
 constexpr double kMaxDistance = 1.0e4;      ///< distance of a grasp target from the origin [m]
 constexpr double kMaxDuration = 1.0e9;      ///< applied force duration and ramp duration [s]
 constexpr double kMaxForceRate = 1.0e9;     ///< |applied force rate| [N/s]
+constexpr double kMaxSpeed = 1.0e3;         ///< |grasp velocity| [m/s]
 constexpr std::size_t kMaxFrameName = 256;  ///< tf frame name [characters]
 
 }  // namespace input_bounds

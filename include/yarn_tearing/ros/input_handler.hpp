@@ -8,6 +8,7 @@
 #include "yarn_tearing/AppliedForce.h"
 #include "yarn_tearing/Grasp.h"
 #include "yarn_tearing/core/simulation/simulator.hpp"
+#include "yarn_tearing/ros/frame_follower.hpp"
 #include "yarn_tearing/ros/frame_transformer.hpp"
 #include "yarn_tearing/ros/input_rejected.hpp"
 #include "yarn_tearing/ros/warning_throttle.hpp"
@@ -21,9 +22,14 @@ namespace ros_layer {
 /// Forces act until replaced for the same vertex, or for `duration` simulated seconds when > 0; a
 /// zero force with a zero rate clears. A force with a `force_rate` changes at that rate in
 /// simulated time (for `ramp_duration` when > 0, then stays), evaluated before each step, its
-/// magnitude capped at input_bounds::kMaxForce. A grasped vertex is kinematic and follows the
-/// origin of its target frame, looked up once per stepping cycle and interpolated linearly over the
-/// cycle's steps. Forces and targets past input_bounds.hpp are refused, so a step never sees one.
+/// magnitude capped at input_bounds::kMaxForce. A grasped vertex is kinematic: its target at each
+/// step is the origin of its target frame at the step's end (FrameTransformer::poseAt(): tf2's
+/// interpolation between the frame's samples, extrapolated at most max_extrapolation past the
+/// latest; a new sample that disagrees with the extrapolation taken up smoothly, FrameFollower),
+/// plus the grasp's own motion, `velocity` for `motion_duration` simulated seconds from
+/// the simulated instant the message is taken. A new grasp blends from where the vertex is to its
+/// target over the first stepping cycle. Forces and targets past input_bounds.hpp are refused, so
+/// a step never sees one.
 class InputHandler {
  public:
   /// `frames` must outlive this object.
@@ -35,18 +41,26 @@ class InputHandler {
   /// everything unchanged.
   void handleAppliedForce(const AppliedForce& msg, Simulator& simulator);
   /// Grasps or releases a vertex; throws InputRejected (unknown yarn or vertex, empty or
-  /// unresolvable or stale target frame, or one past input_bounds::kMaxDistance; releasing a
-  /// vertex that is not grasped).
+  /// unresolvable or stale target frame, or one past input_bounds::kMaxDistance; a velocity past
+  /// input_bounds::kMaxSpeed, a motion duration outside [0, 1e9] s; releasing a vertex that is not
+  /// grasped).
   void handleGrasp(const Grasp& msg, Simulator& simulator);
 
-  /// Before a cycle of steps: looks up the grasp targets. A failing lookup keeps the last target:
+  /// Before a cycle of steps: looks up how the grasps' frames move (FrameTransformer::motionOf()).
+  /// A failing lookup holds each frame where it was at the last step (the grasp's own motion goes
+  /// on):
   /// a stale frame (not updated for frame_timeout) is reported once per grasp until it is updated
   /// again, other failures are warned throttled per reason.
   void beginCycle();
   /// Before each step: clears lapsed forces, sets ramped forces to their value at the step's start
-  /// and moves grasped vertices `fraction` (0..1] of the way from the previous cycle's target to
-  /// this cycle's.
-  void beforeStep(Simulator& simulator, double fraction);
+  /// and sets each grasped vertex's target for the step's end: its frame at `step_end` (the ROS
+  /// time of the step's end) plus the grasp's motion at the step's end in simulated time; a new
+  /// grasp is `fraction` (0..1] of the cycle's steps on from where the vertex was.
+  void beforeStep(Simulator& simulator, double fraction, const ros::Time& step_end);
+
+  /// True when a grasp's frame moves and `step_end` is past where its samples can be extrapolated
+  /// (FrameFollower::outruns()).
+  bool outrunsFrames(const ros::Time& step_end) const;
 
   /// Forgets all forces and grasps (the simulator has been reset).
   void clear();
@@ -72,12 +86,16 @@ class InputHandler {
   };
 
   struct GraspTarget {
-    std::string frame;     ///< tf frame whose origin the vertex follows
-    std::string label;     ///< "vertex <i> of yarn '<name>'", for warnings
-    Eigen::Vector3d from;  ///< target at the start of the cycle [m]
-    Eigen::Vector3d to;    ///< target at the end of the cycle [m]
-    bool fresh = true;     ///< grasped during the last cycle: `from` is the vertex position
-    bool stale = false;    ///< its frame's staleness has been reported
+    FrameFollower follower;  ///< the tf frame whose origin the vertex follows
+    std::string label;       ///< "vertex <i> of yarn '<name>'", for warnings
+    Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  ///< grasp's own motion [m/s], fixed frame
+    double motion_start = 0.0;                           ///< simulated time the grasp was taken [s]
+    double motion_end = 0.0;  ///< simulated time its own motion stops [s] (inf)
+    /// Vertex position minus frame origin when grasped [m]; blended away over the first cycle.
+    Eigen::Vector3d start_offset = Eigen::Vector3d::Zero();
+    Eigen::Vector3d last_target = Eigen::Vector3d::Zero();  ///< of the last step [m]
+    bool fresh = true;   ///< grasped since the last cycle began: that cycle blends the offset
+    bool stale = false;  ///< its frame's staleness has been reported
   };
 
   /// Warns that a grasp keeps its last target because its frame lookup failed with `e`.

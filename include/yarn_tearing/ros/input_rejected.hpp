@@ -17,6 +17,8 @@ enum class RefusalReason : std::size_t {
   kUnknownFrame,      ///< empty, too long, unknown or unresolvable tf frame
   kStaleFrame,        ///< tf frame not updated for longer than frame_timeout
   kNotGrasped,        ///< release of a vertex that is not grasped
+  kTimeOutOfRange,    ///< a stamp or a time difference past the range of ROS time
+  kUnexpected,        ///< any other exception while a message was taken
   kCount              ///< number of reasons (not a reason)
 };
 

@@ -25,6 +25,10 @@ struct NodeSettings {
   /// force's frame or a new grasp's target; a grasp whose frame goes stale holds its last target
   /// and is reported once. 0 = never stale.
   double frame_timeout = 1.0;
+  /// Longest time past a tf frame's latest sample that a grasp target or an attached obstacle is
+  /// extrapolated at the frame's velocity [s, ROS time]; then it holds until the next sample. In
+  /// [0, 10]; 0 = never extrapolated.
+  double max_extrapolation = 0.1;
 
   /// True when publish_rate counts simulated seconds.
   bool publishesInSimulatedTime() const { return real_time_factor == 0.0 || publish_clock; }

@@ -1,10 +1,13 @@
 #pragma once
 
+#include <ros/time.h>
+
 #include <Eigen/Geometry>
 #include <optional>
 #include <vector>
 
 #include "yarn_tearing/core/simulation/simulator.hpp"
+#include "yarn_tearing/ros/frame_follower.hpp"
 #include "yarn_tearing/ros/frame_transformer.hpp"
 #include "yarn_tearing/ros/input_rejected.hpp"
 #include "yarn_tearing/ros/obstacle_spec_loader.hpp"
@@ -15,11 +18,13 @@ namespace ros_layer {
 
 /// The obstacles of ~obstacles in the simulator. A fixed one is there from the start. One attached
 /// to a tf frame joins the simulator in the first stepping cycle its frame resolves and then
-/// follows it: its frame is looked up once per cycle (latest transform, as grasp targets) and the
-/// obstacle moved over the cycle's steps from the last pose to the new one (position linearly,
-/// rotation by slerp). A lookup that fails (unknown, unresolvable or stale frame, an origin past
-/// input_bounds::kMaxDistance) leaves the obstacle at its last pose, warned throttled per reason;
-/// nothing here throws into the step loop.
+/// follows it as grasp targets do: how the frame moves is looked up once per cycle
+/// (FrameTransformer::motionOf()) and the obstacle put, before each step, where the frame is at
+/// the step's end (FrameTransformer::poseAt(): interpolated between the frame's tf samples,
+/// extrapolated at most max_extrapolation past the latest; FrameFollower). A lookup that fails
+/// (unknown, unresolvable or stale frame, an origin past input_bounds::kMaxDistance) holds the
+/// obstacle where it was at the last step, warned throttled per reason; nothing here throws into
+/// the step loop.
 class ObstacleTracker {
  public:
   /// `frames` must outlive this object. Gives `simulator` the fixed obstacles of `specs`.
@@ -29,9 +34,13 @@ class ObstacleTracker {
   /// Before a cycle of steps: looks up the attached obstacles' frames; those resolved for the
   /// first time join the simulator.
   void beginCycle(Simulator& simulator);
-  /// Before each step: moves each attached obstacle `fraction` (0..1] of the way from its pose at
-  /// the previous cycle to this cycle's.
-  void beforeStep(Simulator& simulator, double fraction);
+  /// Before each step: puts each attached obstacle where its frame is at `step_end` (the ROS time
+  /// of the step's end).
+  void beforeStep(Simulator& simulator, const ros::Time& step_end);
+
+  /// True when an attached obstacle's frame moves and `step_end` is past where its samples can be
+  /// extrapolated (FrameFollower::outruns()).
+  bool outrunsFrames(const ros::Time& step_end) const;
 
   /// Number of obstacles of ~obstacles.
   std::size_t size() const { return tracked_.size(); }
@@ -44,11 +53,10 @@ class ObstacleTracker {
  private:
   struct Tracked {
     ObstacleSpec spec;
-    Eigen::Isometry3d from = Eigen::Isometry3d::Identity();  ///< pose at the cycle's start [m]
-    Eigen::Isometry3d to = Eigen::Isometry3d::Identity();    ///< pose at the cycle's end [m]
-    int index = -1;       ///< in the simulator's obstacles(); -1 = not (yet) there
-    bool placed = false;  ///< fixed, or attached and its frame resolved at least once
-    bool lost = false;    ///< its last lookup failed (logged when it resolves again)
+    FrameFollower follower;  ///< its tf frame (attached ones)
+    int index = -1;          ///< in the simulator's obstacles(); -1 = not (yet) there
+    bool placed = false;     ///< fixed, or attached and its frame resolved at least once
+    bool lost = false;       ///< its last lookup failed (logged when it resolves again)
   };
 
   /// Looks up where attached obstacle `tracked` is now; false (warned) when it cannot be found.

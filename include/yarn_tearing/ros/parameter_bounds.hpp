@@ -34,6 +34,7 @@ constexpr double kMaxFrameTimeout = 1.0e6;    ///< frame_timeout [s]
 constexpr double kMaxRealTimeFactor = 1.0e3;  ///< real_time_factor [-] (0 = as fast as possible)
 constexpr double kMinPublishRate = 1.0e-3;    ///< publish_rate [Hz]
 constexpr double kMaxPublishRate = 1.0e3;     ///< publish_rate [Hz]
+constexpr double kMaxExtrapolation = 10.0;    ///< max_extrapolation [s]
 constexpr int kMaxYarnVertices = 100000;     ///< num_vertices of one yarn (ends, picks of a fabric)
 constexpr double kMaxShearRigidity = 1.0e6;  ///< a fabric's shear_rigidity [N/m]
 constexpr double kMinObstacleSize = 1.0e-6;  ///< an obstacle's radius, half length, half extent [m]

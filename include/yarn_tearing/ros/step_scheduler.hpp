@@ -34,6 +34,10 @@ class StepScheduler {
     return anchor_wall_ + (sim_time - anchor_sim_) / real_time_factor_;
   }
 
+  /// Simulated time [s] the simulation at `sim_time` [s] is behind the schedule at `wall_now` [s]
+  /// (0 when on time or as fast as possible).
+  double lag(double wall_now, double sim_time) const;
+
   /// Steps dropped so far because the backlog exceeded max_lag.
   std::uint64_t droppedSteps() const { return dropped_steps_; }
 

@@ -5,7 +5,6 @@
 #include <std_srvs/Empty.h>
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <atomic>
@@ -28,6 +27,7 @@
 #include "yarn_tearing/ros/stamp_clock.hpp"
 #include "yarn_tearing/ros/step_scheduler.hpp"
 #include "yarn_tearing/ros/support_wrench_publisher.hpp"
+#include "yarn_tearing/ros/tf_input.hpp"
 #include "yarn_tearing/ros/warning_throttle.hpp"
 #include "yarn_tearing/ros/wrench_topics.hpp"
 
@@ -81,8 +81,15 @@ class YarnTearingNode {
   /// Restarts the publishing schedule on the clock publish_rate counts in (wall or simulated).
   void restartPublishSchedule();
 
-  /// Takes the steps that are due (or steps for a wall budget when as fast as possible).
+  /// Takes the steps that are due (or steps for a wall budget when as fast as possible); sets
+  /// behind_ when steps are still due after the budget.
   void stepCycle();
+  /// True when the next step would outrun a followed tf frame's samples (a grasp or an obstacle
+  /// would stand still) and the loop has waited less than kFrameWait for a newer one: the cycle
+  /// then ends and the loop polls for tf instead of stepping.
+  bool waitForFrames();
+  /// Adds the wall time since `since` [s] to `stage` in the diagnostics; returns now [s].
+  double recordStage(LoopStage stage, double since);
   /// One physics step; `fraction` (0..1] of the cycle done after it, for grasp interpolation.
   void stepOnce(double fraction);
   void publishBreakEvents();
@@ -107,7 +114,7 @@ class YarnTearingNode {
   ros::NodeHandle private_nh_;
   Simulator simulator_;
   tf2_ros::Buffer tf_buffer_;
-  tf2_ros::TransformListener tf_listener_;
+  TfInput tf_input_;  ///< /tf and /tf_static into tf_buffer_
   FrameTransformer frames_;
   InputHandler inputs_;
   ObstacleTracker obstacles_;
@@ -132,6 +139,9 @@ class YarnTearingNode {
   ros::ServiceServer pause_srv_;
   ros::ServiceServer break_log_srv_;  ///< ~get_break_events
   bool paused_ = false;
+  bool behind_ = false;              ///< the last cycle ended with steps still due: do not idle
+  bool waiting_for_frames_ = false;  ///< the last cycle ended to wait for a frame's sample
+  double frame_wait_start_ = -1.0;   ///< [s] wall, since when it waits; negative: not waiting
   std::atomic<bool> stop_requested_{false};
   boost::recursive_mutex reconfigure_mutex_;
   std::unique_ptr<dynamic_reconfigure::Server<YarnTearingConfig>> reconfigure_;

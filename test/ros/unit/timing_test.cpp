@@ -34,6 +34,16 @@ TEST(StepScheduler, DropsBacklogBeyondMaxLag) {
   EXPECT_EQ(scheduler.stepsDue(1.0, due * kStep), 0U);
 }
 
+TEST(StepScheduler, LagIsTheSimulatedTimeBehindTheSchedule) {
+  StepScheduler scheduler(kStep, 2.0, 0.25);
+  scheduler.restart(10.0, 1.0);
+  EXPECT_NEAR(scheduler.lag(10.1, 1.05), 0.15, 1e-12);  // due 1.2 s at 10.1 s wall
+  EXPECT_EQ(scheduler.lag(10.1, 1.3), 0.0);             // ahead: not behind
+  StepScheduler fast(kStep, 0.0, 0.25);
+  fast.restart(0.0, 0.0);
+  EXPECT_EQ(fast.lag(100.0, 0.0), 0.0);
+}
+
 TEST(StepScheduler, AsFastAsPossibleLeavesPacingToTheCaller) {
   StepScheduler scheduler(kStep, 0.0, 0.25);
   EXPECT_TRUE(scheduler.asFastAsPossible());
