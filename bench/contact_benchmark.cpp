@@ -14,6 +14,7 @@
 
 #include <cmath>
 
+#include "bench_support.hpp"
 #include "yarn_tearing/core/simulation/simulator.hpp"
 
 namespace yarn_tearing {
@@ -50,15 +51,6 @@ Obstacle peg() {
 void advance(Simulator& sim, double seconds) {
   const auto steps = static_cast<int>(std::lround(seconds / sim.parameters().time_step));
   for (int i = 0; i < steps; ++i) sim.step();
-}
-
-/// Times single steps of `sim`; reports the last step's projection iterations.
-void timeSteps(benchmark::State& state, Simulator& sim) {
-  for (auto _ : state) {
-    sim.step();
-    benchmark::ClobberMemory();
-  }
-  state.counters["iterations/step"] = sim.lastHealth().projection_iterations;
 }
 
 /// range(0) vertices pinned at vertex 0, 11.5 segments before a 2 mm peg (the peg under the middle

@@ -3,6 +3,7 @@
 //        --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include "bench_support.hpp"
 #include "yarn_tearing/core/simulation/simulator.hpp"
 
 namespace yarn_tearing {
@@ -29,11 +30,7 @@ void BM_FabricAtRest(benchmark::State& state) {
   parameters.air_damping = 0.05;
   Simulator sim(parameters, {}, {benchFabric(static_cast<int>(state.range(0)), 0.0125)});
   while (sim.time() < 0.2) sim.step();
-  for (auto _ : state) {
-    sim.step();
-    benchmark::ClobberMemory();
-  }
-  state.counters["iterations/step"] = sim.lastHealth().projection_iterations;
+  timeSteps(state, sim);
 }
 
 /// A trouser tear: 2 mm between yarns, held along its first row, a slit a quarter of the picks

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "bench_support.hpp"
 #include "yarn_tearing/core/simulation/simulator.hpp"
 
 namespace yarn_tearing {
@@ -43,15 +44,6 @@ FabricSpec plainWeave(int ends, int picks, double spacing) {
 /// Steps `sim` for `seconds` of simulated time.
 void settle(Simulator& sim, double seconds) {
   while (sim.time() < seconds) sim.step();
-}
-
-/// Times single steps of `sim`; reports the last step's projection iterations.
-void timeSteps(benchmark::State& state, Simulator& sim) {
-  for (auto _ : state) {
-    sim.step();
-    benchmark::ClobberMemory();
-  }
-  state.counters["iterations/step"] = sim.lastHealth().projection_iterations;
 }
 
 /// range(0) x range(0) vertices, 12.5 mm between yarns (as BM_FabricAtRest), pinned at its two top

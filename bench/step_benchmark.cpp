@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "bench_support.hpp"
 #include "yarn_tearing/core/forces/explicit_forces.hpp"
 #include "yarn_tearing/core/material/material_response.hpp"
 #include "yarn_tearing/core/projection/length_constraint_projection.hpp"
@@ -102,11 +103,7 @@ void BM_HeldSpan(benchmark::State& state) {
   parameters.time_step = std::pow(10.0, -static_cast<double>(state.range(1)));
   Simulator sim(parameters, scene);
   while (sim.time() < 0.05) sim.step();
-  for (auto _ : state) {
-    sim.step();
-    benchmark::ClobberMemory();
-  }
-  state.counters["iterations/step"] = sim.lastHealth().projection_iterations;
+  timeSteps(state, sim);
 }
 
 /// A woven-like grid of side x side vertices joined along rows and columns (warp and weft, 12.5 mm
@@ -147,11 +144,7 @@ void BM_GridAtRest(benchmark::State& state) {
   parameters.air_damping = 0.05;
   Simulator sim(parameters, scene);
   while (sim.time() < 0.2) sim.step();
-  for (auto _ : state) {
-    sim.step();
-    benchmark::ClobberMemory();
-  }
-  state.counters["iterations/step"] = sim.lastHealth().projection_iterations;
+  timeSteps(state, sim);
 }
 
 /// Stages 1 and 2 (forces with the soft springs, then symplectic Euler) on the settled state. The
