@@ -9,96 +9,52 @@ of the node's /diagnostics "achieved real-time factor"), the steps the node drop
 lag behind schedule and the costliest stage of its loop. It reports and never fails on the
 figures (exit 0); it exits 1 only when the scene cannot be run.
 
-  tools/measure_table_drag.sh [real_time_factor ...]"""
-import os
-import socket
+  tools/measure_live.sh table_drag [real_time_factor ...]"""
 import statistics
 import subprocess
 import sys
 import time
+
+from live_measurement import Diagnostics, launched, wait
 
 DRAG_TIME = 4.0      # [s] simulated: the gripper's travel time in table_drag.test
 STARTUP = 30.0       # [s] wall: the node and the gripper up, the yarn grasped
 RUN_TIMEOUT = 40.0   # [s] wall: longest one factor's drag may take
 
 
-def free_port():
-    with socket.socket() as sock:
-        sock.bind(("localhost", 0))
-        return sock.getsockname()[1]
-
-
-def values_of(status):
-    return {item.key: item.value for item in status.values}
-
-
-class Measurement:
-    def __init__(self):
-        import rospy
-        from diagnostic_msgs.msg import DiagnosticArray
-        from yarn_tearing.msg import YarnStateArray
-
-        self.rospy = rospy
-        self.states = []       # (wall, sim time, grasped)
-        self.reports = []      # (wall, values)
-        rospy.Subscriber("yarn_states", YarnStateArray, self.on_states, queue_size=100)
-        rospy.Subscriber("/diagnostics", DiagnosticArray, self.on_diagnostics, queue_size=100)
-
-    def on_states(self, message):
-        yarn = message.yarns[0]
-        grasped = (len(yarn.positions) - 1) in list(yarn.support_vertices)
-        self.states.append((time.monotonic(), message.header.stamp.to_sec(), grasped))
-
-    def on_diagnostics(self, message):
-        for status in message.status:
-            if status.name.endswith("simulation"):
-                self.reports.append((time.monotonic(), values_of(status)))
-
-    def grasp(self):
-        return next(((w, t) for w, t, g in self.states if g), None)
-
-    def wait(self, predicate, timeout):
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline and not predicate():
-            time.sleep(0.05)
-        return predicate()
-
-
 def measure(factor):
-    port = free_port()
-    os.environ["ROS_MASTER_URI"] = "http://localhost:%d" % port
-    launch = subprocess.Popen(
-        ["roslaunch", "-p", str(port), "yarn_tearing", "table_drag.test",
-         "real_time_factor:=%g" % factor],
-        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    try:
-        import rosgraph
-        deadline = time.monotonic() + STARTUP
-        while not rosgraph.is_master_online() and time.monotonic() < deadline:
-            time.sleep(0.1)
-        import rospy
-        rospy.init_node("measure_table_drag", anonymous=True, disable_signals=True)
-        m = Measurement()
-        if not m.wait(m.grasp, STARTUP):
+    with launched("table_drag.test", "real_time_factor:=%g" % factor,
+                  node_name="measure_table_drag") as rospy:
+        from yarn_tearing.msg import YarnStateArray
+        states = []  # (wall, sim time, grasped)
+
+        def on_states(message):
+            yarn = message.yarns[0]
+            grasped = (len(yarn.positions) - 1) in list(yarn.support_vertices)
+            states.append((time.monotonic(), message.header.stamp.to_sec(), grasped))
+
+        rospy.Subscriber("yarn_states", YarnStateArray, on_states, queue_size=100)
+        diagnostics = Diagnostics(rospy)
+
+        def grasp():
+            return next(((w, t) for w, t, g in states if g), None)
+
+        if not wait(grasp, STARTUP):
             print("table drag, real_time_factor %g: the yarn was not grasped within %.0f s" %
                   (factor, STARTUP))
             return False
-        wall0, sim0 = m.grasp()
-        if not m.wait(lambda: m.states[-1][1] >= sim0 + DRAG_TIME, RUN_TIMEOUT):
+        wall0, sim0 = grasp()
+        if not wait(lambda: states[-1][1] >= sim0 + DRAG_TIME, RUN_TIMEOUT):
             print("table drag, real_time_factor %g: the drag did not end within %.0f s" %
                   (factor, RUN_TIMEOUT))
             return False
-        wall1, sim1 = m.states[-1][0], m.states[-1][1]
-        m.wait(lambda: m.reports and m.reports[-1][0] > wall1, 3.0)  # the report after the drag
-        during = [v for w, v in m.reports if wall0 < w <= wall1 + 1.0]
-        before = [v for w, v in m.reports if w <= wall0]
-        last = m.reports[-1][1] if m.reports else {}
-        dropped_before = int(before[-1].get("dropped steps (total)", 0)) if before else 0
-        dropped = int(last.get("dropped steps (total)", 0)) - dropped_before
-        factors = [float(v["achieved real-time factor"]) for v in during
-                   if "achieved real-time factor" in v]
-        lags = [float(v.get("lag behind schedule [s]", 0.0)) for v in during]
-        stages = [v.get("costliest stage", "?") for v in during]
+        wall1, sim1 = states[-1][0], states[-1][1]
+        wait(lambda: diagnostics.reports and diagnostics.reports[-1][0] > wall1, 3.0)
+        factors = [float(v) for v in
+                   diagnostics.during(wall0, wall1, "achieved real-time factor")]
+        lags = [float(v) for v in diagnostics.during(wall0, wall1, "lag behind schedule [s]")]
+        stages = diagnostics.during(wall0, wall1, "costliest stage")
+        last = diagnostics.reports[-1][1] if diagnostics.reports else {}
         print("table drag, real_time_factor %g: achieved real-time factor %.3f (states: %.2f "
               "simulated s in %.2f wall s), /diagnostics median %s over %d reports "
               "(min %s, max %s); dropped steps while dragging %d (total %s); largest lag %.3f s; "
@@ -106,17 +62,11 @@ def measure(factor):
               (factor, (sim1 - sim0) / (wall1 - wall0), sim1 - sim0, wall1 - wall0,
                "%.3f" % statistics.median(factors) if factors else "-", len(factors),
                "%.3f" % min(factors) if factors else "-",
-               "%.3f" % max(factors) if factors else "-", dropped,
+               "%.3f" % max(factors) if factors else "-",
+               diagnostics.dropped_between(wall0, wall1),
                last.get("dropped steps (total)", "?"), max(lags) if lags else 0.0,
                max(set(stages), key=stages.count) if stages else "?"))
         return True
-    finally:
-        launch.terminate()
-        try:
-            launch.wait(timeout=15.0)
-        except subprocess.TimeoutExpired:
-            launch.kill()
-            launch.wait()
 
 
 def main():

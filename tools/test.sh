@@ -10,7 +10,9 @@
 #   7. catkin_lint of the package (tools/check_catkin_lint.sh)
 #   8. install space and downstream C++ use (tools/test_install.sh)
 #   9. report only (never fails the run): the node's achieved real-time factor and dropped steps
-#      in the table drag (tools/measure_table_drag.sh, at most 2 minutes)
+#      in the table drag and in fabrics held by their corners and torn (tools/measure_live.sh,
+#      at most 2 and 4 minutes; a figure it could not reach within
+#      its wait is reported as such)
 # Ends with each stage's wall time and the ten slowest tests (tools/slowest_tests.py).
 set -euo pipefail
 
@@ -39,8 +41,10 @@ run_logged tensile /usr/bin/python3 -m unittest discover -s "${repo}/test/tensil
   -t "${repo}/test/tensile"
 run_logged lint bash "${repo}/tools/check_catkin_lint.sh"
 run_logged install bash "${repo}/tools/test_install.sh"
-run_logged measure_table_drag timeout --kill-after=10 120 bash "${repo}/tools/measure_table_drag.sh" \
-  || echo "measure_table_drag: no figures (see ${logs}/measure_table_drag.log)"
+YARN_TEARING_MEASURE_LIMIT=110 run_logged measure_table_drag bash "${repo}/tools/measure_live.sh" \
+  table_drag || echo "measure_table_drag: no figures (see ${logs}/measure_table_drag.log)"
+YARN_TEARING_MEASURE_LIMIT=220 run_logged measure_fabric_draw bash "${repo}/tools/measure_live.sh" \
+  fabric_draw || echo "measure_fabric_draw: no figures (see ${logs}/measure_fabric_draw.log)"
 
 # One closing line over all suites (each suite above already failed the run if it failed).
 core_total=$(grep -ho "tests failed out of [0-9]*" "${logs}/core.log" | awk '{s += $5} END {print s + 0}')

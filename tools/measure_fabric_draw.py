@@ -1,0 +1,91 @@
+"""Measures the node's achieved real-time factor through its topics while a fabric held by its
+two top corners is drawn apart until it tears: test/ros/fabric_corners.launch (a size x size
+cotton plain weave, 8 x 8 cm, its top corners pinned, then grasped by a gripper that draws them
+apart along the weft at 2 cm/s each in simulated time; real_time_factor 1, /use_sim_time).
+
+For each size given (default: 16 and 32) it prints the achieved real-time factor (simulated
+seconds of fabric_states' stamps per wall second) while the grippers draw the patch before its
+first tear, and over the tearing (from 0.1 s before the first tear to 0.5 s after the last), the
+tears, the steps the node dropped and the costliest stage of its loop. It reports and never
+fails on the figures (exit 0); it exits 1 only when the scene cannot be run.
+
+  tools/measure_live.sh fabric_draw [size ...]"""
+import subprocess
+import sys
+import time
+
+from live_measurement import Diagnostics, launched, wait
+
+GRASP_TIME = 1.2     # [s] simulated: the grippers hold and move the corners by then
+STARTUP = 90.0       # [s] wall: longest wait for GRASP_TIME
+FIRST_TEAR = 50.0    # [s] wall: longest wait for the first tear after it
+QUIET_AFTER = 0.5    # [s] simulated without a tear: the tearing is over
+RUN_TIMEOUT = 40.0   # [s] wall: longest the tearing may take
+
+
+def factor(states, wall0, wall1):
+    """Simulated seconds per wall second of the states received between two wall times."""
+    inside = [(w, t) for w, t in states if wall0 <= w <= wall1]
+    if len(inside) < 2 or inside[-1][0] <= inside[0][0]:
+        return float("nan")
+    return (inside[-1][1] - inside[0][1]) / (inside[-1][0] - inside[0][0])
+
+
+def measure(size):
+    with launched("fabric_corners.launch", "size:=%d" % size,
+                  node_name="measure_fabric_draw") as rospy:
+        from yarn_tearing.msg import BreakEvent, FabricStateArray
+        states = []  # (wall, sim time)
+        tears = []   # (wall, sim time)
+        rospy.Subscriber("fabric_states", FabricStateArray,
+                         lambda m: states.append((time.monotonic(), m.header.stamp.to_sec())),
+                         queue_size=100)
+        rospy.Subscriber("break_events", BreakEvent,
+                         lambda m: tears.append((time.monotonic(), m.sim_time)),
+                         queue_size=10000)
+        diagnostics = Diagnostics(rospy)
+        if not wait(lambda: states and states[-1][1] >= GRASP_TIME, STARTUP):
+            if len(states) < 2:
+                print("fabric %d x %d: no states within %.0f s" % (size, size, STARTUP))
+                return False
+            print("fabric %d x %d held by its top corners: achieved real-time factor %.3f hanging "
+                  "from its pins (t = %.3f s simulated after %.0f s wall; the grippers start at "
+                  "%.1f s)" % (size, size, factor(states, states[0][0], states[-1][0]),
+                               states[-1][1], STARTUP, GRASP_TIME))
+            return True
+        grasped = next(w for w, t in states if t >= GRASP_TIME)
+        if not wait(lambda: tears, FIRST_TEAR):
+            print("fabric %d x %d: no tear within %.0f s" % (size, size, FIRST_TEAR))
+            return False
+        deadline = time.monotonic() + RUN_TIMEOUT
+        while time.monotonic() < deadline and states[-1][1] < tears[-1][1] + QUIET_AFTER:
+            time.sleep(0.05)
+        first_wall, first_sim = tears[0]
+        start = next((w for w, t in states if t >= first_sim - 0.1), first_wall)
+        end = next((w for w, t in states if t >= tears[-1][1] + QUIET_AFTER), states[-1][0])
+        stages = diagnostics.during(start, end, "costliest stage")
+        print("fabric %d x %d held by its top corners, drawn apart at 2 cm/s each: achieved "
+              "real-time factor %.3f drawn before the first tear, %.3f over the tearing "
+              "(%d tears from t = %.3f to %.3f s simulated, %.1f s wall); dropped steps %d; "
+              "costliest stage %s" %
+              (size, size, factor(states, grasped, first_wall), factor(states, start, end),
+               len(tears), first_sim, tears[-1][1], end - start,
+               diagnostics.dropped_between(grasped, end),
+               max(set(stages), key=stages.count) if stages else "?"))
+        return True
+
+
+def main():
+    sizes = [int(a) for a in sys.argv[1:]] or [16, 32]
+    ok = True
+    for size in sizes:
+        # one process per size: rospy initializes one node per process
+        if len(sizes) > 1:
+            ok = subprocess.call([sys.executable, __file__, str(size)]) == 0 and ok
+        else:
+            ok = measure(size)
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
