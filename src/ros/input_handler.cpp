@@ -12,6 +12,7 @@
 #include "yarn_tearing/ros/input_bounds.hpp"
 #include "yarn_tearing/ros/input_rejected.hpp"
 #include "yarn_tearing/ros/vertex_lookup.hpp"
+#include "yarn_tearing/ros/vertex_strength.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
@@ -46,8 +47,7 @@ Eigen::Vector3d InputHandler::ActiveForce::at(double time) const {
   const Eigen::Vector3d value =
       rampedValue(force, rate, start, ramp_end, time, input_bounds::kMaxDuration);
   const double norm = value.norm();
-  return norm > input_bounds::kMaxForce ? Eigen::Vector3d(value * (input_bounds::kMaxForce / norm))
-                                        : value;
+  return norm > cap ? Eigen::Vector3d(value * (cap / norm)) : value;
 }
 
 void InputHandler::handleAppliedForce(const AppliedForce& msg, Simulator& simulator) {
@@ -56,7 +56,17 @@ void InputHandler::handleAppliedForce(const AppliedForce& msg, Simulator& simula
   requireDuration(msg.duration, "duration");
   requireDuration(msg.ramp_duration, "ramp_duration");
   const std::uint32_t vertex = lookupVertex(simulator.scene(), msg.yarn, VertexAddress::of(msg));
+  if (force_caps_.size() != simulator.scene().vertices.position.size()) {
+    force_caps_ = vertexBreakingForces(simulator.scene());
+    for (double& cap : force_caps_) {
+      cap = std::min(input_bounds::kMaxForcePerStrength * cap, input_bounds::kMaxForce);
+    }
+  }
   ActiveForce applied;
+  applied.cap = force_caps_[vertex];
+  requireBoundedVector(
+      toEigen(msg.force), applied.cap,
+      "force on " + clipped(msg.yarn) + "'s vertex (100 x its segments' breaking forces)", "N");
   applied.force =
       frames_.rotateToFixedFrame(toEigen(msg.force), msg.header.frame_id, msg.header.stamp);
   applied.rate =

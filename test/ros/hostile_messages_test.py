@@ -12,7 +12,8 @@
 4. Stamps at the end of ROS time (4294967295 s): an applied_force and a grasp's velocity in a
    non-static frame at that stamp are refused, a tf sample of a non-static frame at it is refused
    (tf2's cache arithmetic would leave ROS time's range), with a warning naming the reason; a grasp
-   on that frame is refused; the node keeps stepping."""
+   on that frame is refused; the node keeps stepping.
+5. A force past 100 x the breaking forces of its vertex's segments is refused, naming the bound."""
 import math
 import random
 import re
@@ -312,6 +313,22 @@ class HostileMessagesTest(unittest.TestCase):
         yarn = support.find_yarn(self.states.latest(), "a")
         self.assertNotIn(4, list(yarn.support_vertices), "a grasp on the refused frame was taken")
 
+
+    def test_5_force_far_past_the_vertexs_strength_is_refused(self):
+        # yarn a's last vertex has one edge: sigma_b pi r^2 of it, times 100, is the bound
+        yarn = self.config["yarns"][0]
+        strength = yarn["material"]["stress_strain"][-1][1] * math.pi * yarn["radius"] ** 2
+        time.sleep(2.5)  # past the throttle of any earlier out-of-bounds warning
+        breaks_before = len(self.breaks.messages())
+        since = time.monotonic()
+        self.force("a", -1, (0.0, 0.0, -2.0 * 100.0 * strength))
+        time.sleep(1.0)
+        self.assertEqual(node_pid(), self.pid, "the node restarted or died")
+        refusals = [t for t in self.logs.texts(since=since)
+                    if t.startswith("applied_force refused (out of bounds")]
+        self.assertEqual(len(refusals), 1, refusals)
+        self.assertIn("100 x its segments' breaking forces", refusals[0])
+        self.assertEqual(len(self.breaks.messages()), breaks_before, "the refused force tore")
 
 if __name__ == "__main__":
     rostest.rosrun("yarn_tearing", "hostile_messages", HostileMessagesTest)

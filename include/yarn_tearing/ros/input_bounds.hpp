@@ -11,7 +11,11 @@ namespace ros_layer {
 /// is refused, so nothing from outside can overflow the simulation.
 namespace input_bounds {
 
-constexpr double kMaxForce = 1.0e6;         ///< |applied force| [N]
+constexpr double kMaxForce = 1.0e6;  ///< |applied force| [N]
+/// |applied force| / the breaking forces of the vertex's edges summed (vertexBreakingForces) [-]:
+/// past it a force only flings a vertex that tears out anyway, and a fabric's step to take it
+/// grows from milliseconds to seconds (1e4 x at a 16 x 12 patch's corner: 15 s).
+constexpr double kMaxForcePerStrength = 100.0;
 constexpr double kMaxDistance = 1.0e4;      ///< distance of a grasp target from the origin [m]
 constexpr double kMaxDuration = 1.0e9;      ///< applied force duration and ramp duration [s]
 constexpr double kMaxForceRate = 1.0e9;     ///< |applied force rate| [N/s]

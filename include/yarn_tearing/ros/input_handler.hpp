@@ -36,7 +36,8 @@ class InputHandler {
   explicit InputHandler(const FrameTransformer& frames);
 
   /// Applies an applied_force message; throws InputRejected (non-finite values, a force past
-  /// input_bounds::kMaxForce or a rate past kMaxForceRate, unknown yarn, vertex out of range, a
+  /// input_bounds::kMaxForce or kMaxForcePerStrength x the breaking forces of the vertex's edges,
+  /// a rate past kMaxForceRate, unknown yarn, vertex out of range, a
   /// duration or ramp duration outside [0, 1e9] s, unresolvable or stale frame), leaving
   /// everything unchanged.
   void handleAppliedForce(const AppliedForce& msg, Simulator& simulator);
@@ -80,8 +81,9 @@ class InputHandler {
     double start = 0.0;     ///< simulated time the message was applied [s]
     double ramp_end = 0.0;  ///< simulated time the force stops changing [s] (inf)
     double expiry = 0.0;    ///< simulated time the force lapses [s] (inf)
+    double cap = 0.0;       ///< largest magnitude [N]: the vertex's force bound
 
-    /// Force at simulated time `time` [s] [N], capped at input_bounds::kMaxForce.
+    /// Force at simulated time `time` [s] [N], its magnitude capped at `cap`.
     Eigen::Vector3d at(double time) const;
   };
 
@@ -103,6 +105,9 @@ class InputHandler {
 
   const FrameTransformer& frames_;
   std::map<std::uint32_t, ActiveForce> forces_;  ///< vertex -> its force
+  /// Per vertex, the largest applied force it takes [N]: input_bounds::kMaxForcePerStrength x
+  /// vertexBreakingForces, at most kMaxForce (built at the first force).
+  std::vector<double> force_caps_;
   std::map<std::uint32_t, GraspTarget> grasps_;  ///< vertex -> holder
   WarningThrottle target_warnings_;              ///< per RefusalReason
 };

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "yarn_tearing/ros/input_rejected.hpp"
+#include "yarn_tearing/ros/vertex_strength.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
@@ -81,6 +82,22 @@ TEST(VertexLookup, TheRefusalNamesWhatIsAllowed) {
   }
   EXPECT_EQ(byRowAndColumn(2, -1).describe(), "vertex (row 2, column -1)");
   EXPECT_EQ(byIndex(3).describe(), "vertex 3");
+}
+
+TEST(VertexBreakingForces, SumTheBreakingForcesOfTheEdgesAtEachVertex) {
+  const Scene scene = yarnAndFabric();
+  const std::vector<double> strength = vertexBreakingForces(scene);
+  ASSERT_EQ(strength.size(), scene.vertices.position.size());
+  // One edge's sigma_b pi r^2 (no scatter: strength factors 1).
+  const double edge = scene.edges.area[0] * scene.yarns[0].material.curve.breakingStress();
+  EXPECT_DOUBLE_EQ(strength[0], edge);        // the thread's end: one edge
+  EXPECT_DOUBLE_EQ(strength[2], 2.0 * edge);  // inside the thread: two
+  const std::uint32_t corner = 5;             // the fabric's vertex (0, 0): a warp and a weft
+  const std::uint32_t inner = 5 + 1 * 4 + 1;  // (1, 1): two warp and two weft segments
+  const double warp = scene.edges.area.back() *
+                      scene.yarns[scene.edges.yarn.back()].material.curve.breakingStress();
+  EXPECT_DOUBLE_EQ(strength[corner], 2.0 * warp);
+  EXPECT_DOUBLE_EQ(strength[inner], 4.0 * warp);
 }
 
 }  // namespace
