@@ -5,6 +5,7 @@ import contextlib
 import os
 import socket
 import subprocess
+import sys
 import time
 
 STARTUP = 30.0  # [s] wall: the master up
@@ -75,3 +76,14 @@ class Diagnostics:
 
     def during(self, wall0, wall1, key):
         return [v[key] for w, v in self.reports if wall0 < w <= wall1 + 1.0 and key in v]
+
+
+def run_each(script, arguments, defaults, measure):
+    """main() of a measurement `script` (its __file__): measure(argument) for each command-line
+    argument (or each of `defaults`), each in a process of its own, since rospy initializes one
+    node per process. Returns the exit status: 0, or 1 when a scene could not be run."""
+    arguments = arguments or [str(a) for a in defaults]
+    if len(arguments) == 1:
+        return 0 if measure(arguments[0]) else 1
+    statuses = [subprocess.call([sys.executable, script, a]) for a in arguments]
+    return 0 if all(status == 0 for status in statuses) else 1

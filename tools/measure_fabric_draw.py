@@ -10,11 +10,10 @@ tears, the steps the node dropped and the costliest stage of its loop. It report
 fails on the figures (exit 0); it exits 1 only when the scene cannot be run.
 
   tools/measure_live.sh fabric_draw [size ...]"""
-import subprocess
 import sys
 import time
 
-from live_measurement import Diagnostics, launched, wait
+from live_measurement import Diagnostics, launched, run_each, wait
 
 GRASP_TIME = 1.2     # [s] simulated: the grippers hold and move the corners by then
 STARTUP = 90.0       # [s] wall: longest wait for GRASP_TIME
@@ -76,15 +75,7 @@ def measure(size):
 
 
 def main():
-    sizes = [int(a) for a in sys.argv[1:]] or [16, 32]
-    ok = True
-    for size in sizes:
-        # one process per size: rospy initializes one node per process
-        if len(sizes) > 1:
-            ok = subprocess.call([sys.executable, __file__, str(size)]) == 0 and ok
-        else:
-            ok = measure(size)
-    return 0 if ok else 1
+    return run_each(__file__, sys.argv[1:], [16, 32], lambda size: measure(int(size)))
 
 
 if __name__ == "__main__":

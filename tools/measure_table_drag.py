@@ -11,11 +11,10 @@ figures (exit 0); it exits 1 only when the scene cannot be run.
 
   tools/measure_live.sh table_drag [real_time_factor ...]"""
 import statistics
-import subprocess
 import sys
 import time
 
-from live_measurement import Diagnostics, launched, wait
+from live_measurement import Diagnostics, launched, run_each, wait
 
 DRAG_TIME = 4.0      # [s] simulated: the gripper's travel time in table_drag.test
 STARTUP = 30.0       # [s] wall: the node and the gripper up, the yarn grasped
@@ -70,15 +69,7 @@ def measure(factor):
 
 
 def main():
-    factors = [float(a) for a in sys.argv[1:]] or [1.0, 0.0]
-    ok = True
-    for factor in factors:
-        # one process per factor: rospy initializes one node per process
-        if len(factors) > 1:
-            ok = subprocess.call([sys.executable, __file__, repr(factor)]) == 0 and ok
-        else:
-            ok = measure(factor)
-    return 0 if ok else 1
+    return run_each(__file__, sys.argv[1:], [1.0, 0.0], lambda factor: measure(float(factor)))
 
 
 if __name__ == "__main__":
