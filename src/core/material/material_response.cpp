@@ -31,7 +31,10 @@ void updateRateFactor(const Material& material, double time_step, double previou
   }
   if (edges.loading_time[e] == 0.0) edges.loading_start_strain[e] = previous_strain;
   edges.loading_time[e] += time_step;
-  const double rate = (edges.strain[e] - edges.loading_start_strain[e]) / edges.loading_time[e];
+  // An edge held at its breaking length by the stop past it tears in this step: the force the
+  // stop takes on is no strain the edge was loaded at.
+  const double strain = std::min(edges.strain[e], edges.breaking_strain[e]);
+  const double rate = (strain - edges.loading_start_strain[e]) / edges.loading_time[e];
   edges.rate_factor[e] = RateDependence::stressFactor(material.rate_sensitivity, rate);
 }
 

@@ -1,48 +1,134 @@
 #include "yarn_tearing/core/projection/edge_stretch_state.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace yarn_tearing {
 
 void EdgeStretchState::reset(const EdgeSet& edges, const EdgeStretchLimits& limits,
                              double time_step) {
   const std::size_t q = edges.size();
-  const double time_step2 = time_step * time_step;
-  compliant_shift_.resize(q);
+  limits_ = &limits;
+  time_step2_ = time_step * time_step;
+  pieces_.clear();
+  begin_.resize(q);
+  end_.resize(q);
+  pending_.assign(q, 0);
+  piece_.resize(q);
+  shift_.resize(q);
+  base_length_.resize(q);
+  const bool flows = limits.flow_start.size() == q && limits.yarns != nullptr;
   for (std::size_t e = 0; e < q; ++e) {
-    compliant_shift_[e] = limits.constraintCompliance(e) / time_step2;
+    const double flow_start =
+        flows ? limits.flow_start[e] * time_step2_ : std::numeric_limits<double>::infinity();
+    const double s = limits.constraintCompliance(e) / time_step2_;
+    const double held_from = limits.max_stretch[e] / s;
+    if (flow_start <= 0.0) {
+      expand(edges, e);  // flowing from the start: its spring alone is past its yield stress
+    } else if (flow_start < held_from) {
+      // Elastic up to where its flow starts; the rest is built if a multiplier gets there.
+      begin_[e] = static_cast<std::uint32_t>(pieces_.size());
+      pieces_.push_back(Piece{0.0, edges.rest_length[e], s});
+      pieces_.push_back(Piece{flow_start, 0.0, 0.0});
+      end_[e] = begin_[e] + 2;
+      pending_[e] = 1;
+    } else {
+      buildPieces(edges, e, {});
+    }
+    set(e, begin_[e]);
   }
-  max_stretch_ = limits.max_stretch;
-  shift_ = compliant_shift_;
-  base_length_ = edges.rest_length;
-  saturated_.assign(q, 0);
+}
+
+void EdgeStretchState::expand(const EdgeSet& edges, std::size_t e) {
+  flowKnots(edges, *limits_->yarns, e, knots_);
+  buildPieces(edges, e, knots_);
+  pending_[e] = 0;
+  piece_[e] = begin_[e];  // a pending edge is on its first piece, which this one repeats
+}
+
+void EdgeStretchState::buildPieces(const EdgeSet& edges, std::size_t e,
+                                   const std::vector<FlowKnot>& knots) {
+  // limit(m) = L + s m + X(m), X the plastic elongation of the flow kinks (force T_c = m / dt^2),
+  // continuous and rising; held from where it reaches the breaking length L + s_max on.
+  const EdgeStretchLimits& limits = *limits_;
+  begin_[e] = static_cast<std::uint32_t>(pieces_.size());
+  const double s = limits.constraintCompliance(e) / time_step2_;
+  const double rest = edges.rest_length[e];
+  const double breaking_length = rest + limits.max_stretch[e];
+  std::size_t knot = 0;
+  Piece piece{0.0, rest, s};
+  if (!knots.empty() && knots[0].force == 0.0) {
+    piece.base += knots[0].elongation;
+    piece.shift += knots[0].slope / time_step2_;
+    ++knot;
+  }
+  for (;;) {
+    const double next_start = knot < knots.size() ? knots[knot].force * time_step2_
+                                                  : std::numeric_limits<double>::infinity();
+    // Where this piece reaches the breaking length, the stop takes over.
+    const double held_from = (breaking_length - piece.base) / piece.shift;
+    if (held_from <= next_start) {
+      // A piece that begins at the breaking length already is the stop's.
+      if (held_from > piece.start) pieces_.push_back(piece);
+      const double start = std::max(held_from, piece.start);
+      const double shift = kStopCompliance * s;
+      pieces_.push_back(Piece{start, breaking_length - shift * start, shift});
+      break;
+    }
+    pieces_.push_back(piece);
+    const FlowKnot& k = knots[knot];
+    const double shift = s + k.slope / time_step2_;
+    const double at_knot = rest + s * next_start + k.elongation;
+    piece = Piece{next_start, at_knot - shift * next_start, shift};
+    ++knot;
+  }
+  end_[e] = static_cast<std::uint32_t>(pieces_.size());
+}
+
+std::uint32_t EdgeStretchState::nextPieceToward(const EdgeSet& edges, std::size_t e, double m) {
+  const std::uint32_t k = piece_[e];
+  if (k + 1 < end_[e] && m >= pieces_[k + 1].start) {
+    if (pending_[e]) {
+      expand(edges, e);  // its first piece is the same: the next is begin_ + 1
+      return begin_[e] + 1;
+    }
+    return k + 1;
+  }
+  if (k > begin_[e] && m < pieces_[k].start) return k - 1;
+  return k;
 }
 
 bool EdgeStretchState::wouldSwitch(std::size_t e, double m) const {
-  const double stretch = compliant_shift_[e] * m;
-  return saturated_[e] ? stretch < max_stretch_[e] * (1.0 - kMargin)
-                       : stretch > max_stretch_[e] * (1.0 + kMargin);
+  const std::uint32_t k = piece_[e];
+  const bool below = k > begin_[e] && m < pieces_[k].start * (1.0 - kMargin);
+  const bool above = k + 1 < end_[e] && m > pieces_[k + 1].start * (1.0 + kMargin);
+  return below || above;
 }
 
 double EdgeStretchState::settle(const EdgeSet& edges, std::size_t e, double m) {
   if (!(m > 0.0)) return release(edges, e);
-  return wouldSwitch(e, m) ? set(edges, e, !saturated_[e]) : 0.0;
+  return wouldSwitch(e, m) ? set(e, nextPieceToward(edges, e, m)) : 0.0;
 }
 
-double EdgeStretchState::multiplierAtLength(const EdgeSet& edges, std::size_t e,
-                                            double length) const {
-  const double stretch = length - edges.rest_length[e];
-  if (!(stretch > 0.0)) return 0.0;
-  if (stretch <= max_stretch_[e]) return stretch / compliant_shift_[e];
-  return (max_stretch_[e] + (stretch - max_stretch_[e]) / kStopCompliance) / compliant_shift_[e];
+double EdgeStretchState::release(const EdgeSet& /*edges*/, std::size_t e) {
+  return set(e, begin_[e]);
 }
 
-double EdgeStretchState::set(const EdgeSet& edges, std::size_t e, bool saturated) {
-  // Held: limit = L + s_max + r s (m - s_max / s), r = kStopCompliance, continuous with the
-  // compliant L + s m at the switch. r > 0 keeps the Newton step's system quasi-definite.
+double EdgeStretchState::multiplierAtLength(const EdgeSet& edges, std::size_t e, double length) {
+  if (!(length > pieces_[begin_[e]].base)) return 0.0;
+  if (pending_[e]) expand(edges, e);
+  for (std::uint32_t k = begin_[e]; k < end_[e]; ++k) {
+    const double m = (length - pieces_[k].base) / pieces_[k].shift;
+    if (k + 1 == end_[e] || m < pieces_[k + 1].start) return std::max(m, pieces_[k].start);
+  }
+  return 0.0;
+}
+
+double EdgeStretchState::set(std::size_t e, std::uint32_t piece) {
   const double old_base = base_length_[e];
-  base_length_[e] =
-      edges.rest_length[e] + (saturated ? max_stretch_[e] * (1.0 - kStopCompliance) : 0.0);
-  shift_[e] = compliant_shift_[e] * (saturated ? kStopCompliance : 1.0);
-  saturated_[e] = saturated ? 1 : 0;
+  piece_[e] = piece;
+  base_length_[e] = pieces_[piece].base;
+  shift_[e] = pieces_[piece].shift;
   return old_base - base_length_[e];
 }
 

@@ -220,6 +220,7 @@ void Simulator::accumulateForces() {
   accumulateExplicitForces(parameters_, scene_.vertices, work_.stretch_limits.soft_spring,
                            scene_.edges, work_.force);
   accumulateShearForces(scene_, parameters_, work_.force);
+  computeFlowLimits(scene_, work_.stretch_limits);  // after the soft springs' tensions
 }
 
 void Simulator::predictPositions() {

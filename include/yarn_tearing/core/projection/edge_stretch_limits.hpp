@@ -1,11 +1,23 @@
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "yarn_tearing/core/model/scene.hpp"
 #include "yarn_tearing/core/simulation/simulation_parameters.hpp"
 
 namespace yarn_tearing {
+
+/// A kink of an edge's plastic flow within one step. From the constraint force `force` [N] on,
+/// the edge's length limit grows by `slope` [m/N] beyond what its elastic compliance gives:
+/// L0 (1/H - 1/E) / (f A) on a segment of the curve of slope H past the edge's current yield
+/// stress, 0 where it does not flow. `elongation` [m] is the plastic elongation
+/// L0 (eps_p - eps_p,n) the step's flow has reached at that force.
+struct FlowKnot {
+  double force = 0.0;       ///< constraint force where the kink is [N]
+  double elongation = 0.0;  ///< plastic elongation there [m]
+  double slope = 0.0;       ///< its growth per newton of constraint force from there on [m/N]
+};
 
 /// How stiff each edge is and how far it may stretch past its (plastic) rest length L in one step.
 /// The edge's elastic stiffness E A / L0 is shared between the explicit soft spring (stage 1) and
@@ -26,6 +38,14 @@ struct EdgeStretchLimits {
   /// eps_b times the edge's strength factor f) minus the rest length.
   std::vector<double> max_stretch;
 
+  /// Constraint force [N] from which each edge flows plastically in the step: f A sigma_y,n -
+  /// T_s, sigma_y,n the stress its current plastic strain was reached at (its current yield
+  /// stress), T_s its soft spring's tension; infinite where it cannot flow before its breaking
+  /// point. Empty (no flow: elastic up to the breaking length) unless computeFlowLimits ran.
+  std::vector<double> flow_start;
+  /// The scene's yarns (their curves) while flow_start is set, for flowKnots().
+  const std::vector<Yarn>* yarns = nullptr;
+
   /// Largest share of an edge's elastic stiffness its soft spring may take [-].
   static constexpr double kSoftSpringShare = 0.5;
 
@@ -45,5 +65,18 @@ double stabilitySpringConstant(const VertexSet& vertices, std::uint32_t a, std::
 /// time step.
 void computeStretchLimits(const Scene& scene, const SimulationParameters& parameters,
                           EdgeStretchLimits& limits);
+
+/// Fills limits.flow_start (and limits.yarns): where each intact edge starts to flow
+/// plastically within the step under a constraint force T_c [N] beside its soft spring's tension
+/// (EdgeSet::spring_tension, so after stage 1's forces). Cheap for edges far from yield; their
+/// kinks are found only for the edges a projection takes past flow_start (flowKnots).
+void computeFlowLimits(const Scene& scene, EdgeStretchLimits& limits);
+
+/// Edge e's plastic flow within the step as kinks by rising constraint force T_c [N]: the
+/// plastic elongation L0 (max(eps_p,n, eps_p((T_s + T_c) / (f A))) - eps_p,n), eps_p the
+/// curve's plastic strain at a stress, flow stopping at the edge's breaking point as in the
+/// material update (doc/method.md, "Plastic flow within the step"). Replaces `knots`.
+void flowKnots(const EdgeSet& edges, const std::vector<Yarn>& yarns, std::size_t e,
+               std::vector<FlowKnot>& knots);
 
 }  // namespace yarn_tearing

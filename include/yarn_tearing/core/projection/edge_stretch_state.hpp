@@ -8,48 +8,79 @@
 
 namespace yarn_tearing {
 
-/// Whether each edge is compliant or held at its largest stretch during one projection, and the
-/// linear limit that follows. A compliant edge may be L + s m long (s = c / dt^2 [1/kg], m its
-/// multiplier [kg m]); a held one L + s_max, plus a stop 10^6 times stiffer than the yarn for
-/// the force beyond (so that the systems stay quasi-definite). Both regimes are linear in m, so
-/// the projection's linear complementarity problem keeps its form: limit = B + S m, with the base
-/// length B [m] and the shift S [1/kg] given per edge here.
+/// Each edge's length limit during one projection as a piecewise-linear function of its
+/// multiplier m [kg m] (the constraint force T_c times dt^2), and the piece each edge is on.
+/// An elastic edge may be L + s m long (s = c / dt^2 [1/kg]); where the step's force takes it
+/// past its current yield stress, its plastic flow adds L0 (eps_p - eps_p,n) on top
+/// (EdgeStretchLimits::flow_knots), linear in m on each segment of the curve; at its breaking
+/// length L0 (1 + eps_b) it is held, with a stop 10^6 times stiffer than the yarn for the force
+/// beyond (so that the systems stay quasi-definite). Every piece is linear in m, so the
+/// projection's linear complementarity problem keeps its form: limit = B + S m, with the base
+/// length B [m] and the shift S [1/kg] of the edge's current piece given here.
 class EdgeStretchState {
  public:
-  /// Takes the compliance terms s = c / dt^2 and the largest stretches; all edges compliant.
+  /// Takes each edge's compliance term, where it starts to flow and its largest stretch from
+  /// `limits` (kept by reference until the next reset); every edge on its first piece. The
+  /// pieces past the start of an edge's flow are built when a multiplier first reaches it.
   void reset(const EdgeSet& edges, const EdgeStretchLimits& limits, double time_step);
 
-  /// Sets edge e to the regime that multiplier `m` [kg m] puts it in; returns B_old - B_new [m].
+  /// Moves edge e one piece toward the one multiplier `m` [kg m] lies on (nextPieceToward);
+  /// returns B_old - B_new [m].
   double settle(const EdgeSet& edges, std::size_t e, double m);
-  /// Makes edge e compliant (m = 0: a slack edge is never held at its largest stretch).
-  double release(const EdgeSet& edges, std::size_t e) { return set(edges, e, false); }
-  /// True when multiplier `m` would put edge e in the other regime. A relative margin keeps an
-  /// edge right at its largest stretch from switching back and forth on round-off.
+  /// Puts edge e on its first piece (m = 0: a slack edge neither flows nor is held).
+  double release(const EdgeSet& edges, std::size_t e);
+  /// True when multiplier `m` lies off edge e's current piece. A relative margin keeps an edge
+  /// right at a kink (its largest stretch, say) from switching back and forth on round-off.
   bool wouldSwitch(std::size_t e, double m) const;
 
-  /// S per edge [1/kg]: s, or 10^-6 s when saturated.
+  /// S per edge [1/kg] on its current piece: s, s plus the flow's growth, or 10^-6 s when held.
   const std::vector<double>& shift() const { return shift_; }
-  /// B per edge [m]: L, or L + (1 - 10^-6) s_max when saturated.
+  /// B per edge [m] on its current piece: L on the first elastic one.
   const std::vector<double>& baseLength() const { return base_length_; }
   /// The multiplier [kg m] at which edge e, `length` [m] long, is exactly at its limit: the
-  /// force (times dt^2) of a stiff spring of the edge's compliance stretched to that length, and
-  /// of the stop past its largest stretch; 0 when the edge is not stretched. For an edge whose
-  /// vertices are all pinned or kinematic, which no projection can move: its length is given.
-  double multiplierAtLength(const EdgeSet& edges, std::size_t e, double length) const;
-  /// The limit B + S m [m] of edge e under multiplier `m` [kg m].
+  /// force (times dt^2) of a stiff spring of the edge's compliance and flow stretched to that
+  /// length, and of the stop past its largest stretch; 0 when the edge is not stretched past its
+  /// limit at m = 0. For an edge whose vertices are all pinned or kinematic, which no projection
+  /// can move: its length is given.
+  double multiplierAtLength(const EdgeSet& edges, std::size_t e, double length);
+  /// The limit B + S m [m] of edge e under multiplier `m` [kg m] on its current piece.
   double limit(std::size_t e, double m) const { return base_length_[e] + shift_[e] * m; }
 
  private:
-  double set(const EdgeSet& edges, std::size_t e, bool saturated);
+  /// One linear piece of an edge's limit: from multiplier `start` [kg m] on, B + S m.
+  struct Piece {
+    double start = 0.0;  ///< [kg m]
+    double base = 0.0;   ///< B [m]
+    double shift = 0.0;  ///< S [1/kg]
+  };
+  /// Appends edge e's pieces to pieces_ from `knots` (its flow; none: elastic up to its
+  /// breaking length) and points begin_[e], end_[e] at them.
+  void buildPieces(const EdgeSet& edges, std::size_t e, const std::vector<FlowKnot>& knots);
+  /// Builds edge e's flow pieces (flowKnots) the first time a multiplier reaches them.
+  void expand(const EdgeSet& edges, std::size_t e);
+  /// The piece (index into pieces_) next to edge e's current one on the side of multiplier m.
+  /// One kink at a time: an edge's limit bends up where it starts to flow and down where it is
+  /// held, and a linearization that jumped across both at once could return to where it started
+  /// (a Newton iteration cycling around an S-shaped curve); kink by kink, each solve starts
+  /// from the piece next to the answer.
+  std::uint32_t nextPieceToward(const EdgeSet& edges, std::size_t e, double m);
+  double set(std::size_t e, std::uint32_t piece);
 
   static constexpr double kMargin = 1e-9;  ///< relative, see wouldSwitch
   /// Compliance of the stop at the largest stretch, relative to the yarn's [-].
   static constexpr double kStopCompliance = 1e-6;
-  std::vector<double> compliant_shift_;  ///< s = c / dt^2 [1/kg]
-  std::vector<double> max_stretch_;      ///< s_max [m]
-  std::vector<double> shift_;            ///< S [1/kg]
-  std::vector<double> base_length_;      ///< B [m]
-  std::vector<std::uint8_t> saturated_;  ///< held at the largest stretch
+  const EdgeStretchLimits* limits_ = nullptr;  ///< of the last reset
+  double time_step2_ = 1.0;                    ///< dt^2 [s^2]
+  std::vector<Piece> pieces_;                  ///< every edge's pieces, by rising start
+  std::vector<std::uint32_t> begin_;           ///< edge e's pieces: [begin_[e], end_[e])
+  std::vector<std::uint32_t> end_;             ///< see begin_
+  /// Edge e's pieces past its first are still to be built: its second entry only marks where
+  /// its flow starts.
+  std::vector<std::uint8_t> pending_;
+  std::vector<std::uint32_t> piece_;  ///< each edge's current piece (into pieces_)
+  std::vector<double> shift_;         ///< S [1/kg]
+  std::vector<double> base_length_;   ///< B [m]
+  std::vector<FlowKnot> knots_;       ///< scratch of expand()
 };
 
 }  // namespace yarn_tearing
