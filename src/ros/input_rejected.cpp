@@ -21,6 +21,8 @@ const char* reasonName(RefusalReason reason) {
       return "not grasped";
     case RefusalReason::kTimeOutOfRange:
       return "time out of range";
+    case RefusalReason::kThroughYarn:
+      return "through a yarn";
     case RefusalReason::kUnexpected:
       return "unexpected error";
     case RefusalReason::kCount:

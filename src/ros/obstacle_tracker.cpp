@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "yarn_tearing/core/contact/deep_overlap.hpp"
 #include "yarn_tearing/ros/input_bounds.hpp"
 
 namespace yarn_tearing {
@@ -26,7 +27,11 @@ ObstacleTracker::ObstacleTracker(const FrameTransformer& frames, std::vector<Obs
     tracked.spec = std::move(spec);
     tracked_.push_back(std::move(tracked));
   }
-  placeInSimulator(simulator);
+  try {
+    placeInSimulator(simulator);
+  } catch (const ObstacleThroughYarn& e) {  // a fixed one: the configuration's to change
+    throw std::invalid_argument(std::string("obstacles: ") + e.what());
+  }
 }
 
 std::optional<std::size_t> ObstacleTracker::simulatorIndex(std::size_t i) const {
@@ -44,7 +49,24 @@ void ObstacleTracker::beginCycle(Simulator& simulator) {
       joined = true;
     }
   }
-  if (joined) placeInSimulator(simulator);
+  if (!joined) return;
+  // A joining obstacle whose frame puts it through a yarn waits (warned) until its frame moves
+  // it clear; each refusal takes one out, so this ends.
+  for (;;) {
+    try {
+      placeInSimulator(simulator);
+      return;
+    } catch (const ObstacleThroughYarn& e) {
+      Tracked& refused = byName(e.obstacle());
+      refused.placed = false;
+      warnLookupFailed(refused, InputRejected(RefusalReason::kThroughYarn, e.what()));
+    }
+  }
+}
+
+ObstacleTracker::Tracked& ObstacleTracker::byName(const std::string& name) {
+  const auto named = [&name](const Tracked& tracked) { return tracked.spec.obstacle.name == name; };
+  return *std::find_if(tracked_.begin(), tracked_.end(), named);  // names are unique (loader)
 }
 
 bool ObstacleTracker::lookUp(Tracked& tracked) {
@@ -107,6 +129,8 @@ void ObstacleTracker::beforeStep(Simulator& simulator, const ros::Time& step_end
     try {
       simulator.setObstaclePose(static_cast<std::size_t>(tracked.index),
                                 tracked.follower.poseAt(frames_, step_end) * tracked.spec.offset);
+    } catch (const ObstacleThroughYarn& e) {  // a frame jumped into a yarn: it stays where it was
+      warnLookupFailed(tracked, InputRejected(RefusalReason::kThroughYarn, e.what()));
     } catch (const std::exception& e) {  // past the core's bounds: an extrapolation run away
       ROS_ERROR_THROTTLE(kWarnPeriod, "obstacle '%s' not moved: %s",
                          tracked.spec.obstacle.name.c_str(), e.what());

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "yarn_tearing/core/contact/deep_overlap.hpp"
 #include "yarn_tearing/core/model/scene.hpp"
 #include "yarn_tearing/ros/fabric_spec_loader.hpp"
 #include "yarn_tearing/ros/param_value.hpp"
@@ -152,8 +153,9 @@ SimulationParameters loadPhysics(const PrivateParams& params) {
   return p;
 }
 
-/// ~yarns and ~fabrics: at least one yarn or fabric, unique names, within the scene budget.
-void loadBodies(const PrivateParams& params, SimulationConfig& config) {
+/// ~yarns and ~fabrics: at least one yarn or fabric, unique names, within the scene budget; the
+/// scene they build.
+Scene loadBodies(const PrivateParams& params, SimulationConfig& config) {
   const std::string allowed = "a list of yarns (see config/default.yaml)";
   const std::optional<ParamValue> yarns = params.get("yarns");
   const std::optional<ParamValue> fabrics = params.get("fabrics");
@@ -207,22 +209,30 @@ void loadBodies(const PrivateParams& params, SimulationConfig& config) {
               std::to_string(elements) + " or more");
   }
   try {
-    buildScene(config.yarns, config.fabrics);
+    return buildScene(config.yarns, config.fabrics);
   } catch (const std::exception& e) {
     (yarns ? *yarns : *fabrics)
         .fail(std::string("yarns and fabrics that build a scene (") + e.what() + ")");
   }
 }
 
-/// ~obstacles (optional): unique names.
-void loadObstacles(const PrivateParams& params, SimulationConfig& config) {
+/// ~obstacles (optional): unique names; a fixed one clear of `scene`'s yarns (at most half a
+/// segment into them, findDeepOverlap).
+void loadObstacles(const PrivateParams& params, const Scene& scene, SimulationConfig& config) {
   const std::optional<ParamValue> obstacles = params.get("obstacles");
   if (!obstacles) return;
   std::set<std::string> names;
   for (const ParamValue& entry : obstacles->elements()) {
     config.obstacles.push_back(loadObstacleSpec(entry));
-    if (!names.insert(config.obstacles.back().obstacle.name).second) {
+    const ObstacleSpec& spec = config.obstacles.back();
+    if (!names.insert(spec.obstacle.name).second) {
       entry.member("name").fail("a name that no other obstacle has");
+    }
+    if (spec.attached()) continue;  // placed where its frame is, once it resolves
+    if (const std::optional<DeepOverlap> overlap = findDeepOverlap(spec.obstacle, scene)) {
+      (entry.has("position") ? entry.member("position") : entry)
+          .fail("a pose clear of the yarns and fabrics: " +
+                describeDeepOverlap(*overlap, spec.obstacle, scene));
     }
   }
 }
@@ -258,8 +268,8 @@ SimulationConfig loadSimulationConfig(const ros::NodeHandle& private_nh) {
   SimulationConfig config;
   config.node = loadNodeSettings(params);
   config.parameters = loadPhysics(params);
-  loadBodies(params, config);
-  loadObstacles(params, config);
+  const Scene scene = loadBodies(params, config);
+  loadObstacles(params, scene, config);
   requireStableDamping(params, config);
   warnUnknownKeys(private_nh, params.askedKeys());
   return config;

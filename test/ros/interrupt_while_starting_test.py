@@ -2,7 +2,7 @@
 """SIGINT and SIGTERM end yarn_tearing_node at once while it validates and builds a scene at the
 scene budget (a quarter of a second to seconds of work that checks no ROS flag): exit status 128 + signal within
 EXIT_WITHIN seconds, with one line on stderr. Once it steps, they end it within STEP_EXIT_WITHIN
-seconds however long the step in progress takes (a fabric started through a ball): status 0 when
+seconds however long the step in progress takes (a large fabric started against a ball): status 0 when
 the step ended in time, else 128 + signal with one line on stderr.
 
 The config is uploaded to its own namespace per case, and the node binary is run directly with

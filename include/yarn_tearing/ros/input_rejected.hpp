@@ -18,6 +18,7 @@ enum class RefusalReason : std::size_t {
   kStaleFrame,        ///< tf frame not updated for longer than frame_timeout
   kNotGrasped,        ///< release of a vertex that is not grasped
   kTimeOutOfRange,    ///< a stamp or a time difference past the range of ROS time
+  kThroughYarn,       ///< an obstacle's pose through a yarn (ObstacleThroughYarn)
   kUnexpected,        ///< any other exception while a message was taken
   kCount              ///< number of reasons (not a reason)
 };

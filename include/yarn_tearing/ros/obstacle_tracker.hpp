@@ -22,12 +22,14 @@ namespace ros_layer {
 /// (FrameTransformer::motionOf()) and the obstacle put, before each step, where the frame is at
 /// the step's end (FrameTransformer::poseAt(): interpolated between the frame's tf samples,
 /// extrapolated at most max_extrapolation past the latest; FrameFollower). A lookup that fails
-/// (unknown, unresolvable or stale frame, an origin past input_bounds::kMaxDistance) holds the
-/// obstacle where it was at the last step, warned throttled per reason; nothing here throws into
-/// the step loop.
+/// (unknown, unresolvable or stale frame, an origin past input_bounds::kMaxDistance), and a pose
+/// through a yarn (ObstacleThroughYarn: a frame jumping into the fabric), holds the obstacle
+/// where it was at the last step (or keeps it out of the simulator until its frame is clear),
+/// warned throttled per reason; nothing here throws into the step loop.
 class ObstacleTracker {
  public:
-  /// `frames` must outlive this object. Gives `simulator` the fixed obstacles of `specs`.
+  /// `frames` must outlive this object. Gives `simulator` the fixed obstacles of `specs`; throws
+  /// std::invalid_argument starting "obstacles: " when one lies through a yarn.
   ObstacleTracker(const FrameTransformer& frames, std::vector<ObstacleSpec> specs,
                   Simulator& simulator);
 
@@ -59,6 +61,8 @@ class ObstacleTracker {
     bool lost = false;       ///< its last lookup failed (logged when it resolves again)
   };
 
+  /// The tracked obstacle of that name (one exists: the simulator's obstacles are ours).
+  Tracked& byName(const std::string& name);
   /// Looks up where attached obstacle `tracked` is now; false (warned) when it cannot be found.
   bool lookUp(Tracked& tracked);
   /// Warns, throttled per reason, that `tracked`'s frame lookup failed with `e`.

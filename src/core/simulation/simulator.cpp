@@ -1,10 +1,12 @@
 #include "yarn_tearing/core/simulation/simulator.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "yarn_tearing/core/contact/deep_overlap.hpp"
 #include "yarn_tearing/core/forces/explicit_forces.hpp"
 #include "yarn_tearing/core/forces/fabric_shear.hpp"
 #include "yarn_tearing/core/material/material_response.hpp"
@@ -359,7 +361,12 @@ void Simulator::releaseVertex(std::uint32_t vertex) {
 }
 
 void Simulator::setObstacles(const std::vector<Obstacle>& obstacles) {
-  for (const Obstacle& o : obstacles) o.validate();
+  for (const Obstacle& o : obstacles) {
+    o.validate();
+    // One already in place stays unchecked: the contact has kept the yarns out of it.
+    const auto in_place = [&o](const Obstacle& old) { return old.sameGeometry(o); };
+    if (std::none_of(obstacles_.begin(), obstacles_.end(), in_place)) requireClearOfYarns(o);
+  }
   // The same solids where they were (only their friction or names changed): the contacts keep
   // their friction states (a point new to a step is frictionless in its first Newton step,
   // which let a wrap whose friction was switched on slip 2.7 chords in that Newton step).
@@ -382,7 +389,14 @@ void Simulator::setObstaclePose(std::size_t index, const Eigen::Isometry3d& pose
   Obstacle moved = obstacles_[index];
   moved.pose = pose;
   moved.validate();
+  if (!moved.sameGeometry(obstacles_[index])) requireClearOfYarns(moved);
   obstacles_[index] = moved;
+}
+
+void Simulator::requireClearOfYarns(const Obstacle& obstacle) const {
+  if (const std::optional<DeepOverlap> overlap = findDeepOverlap(obstacle, scene_)) {
+    throw ObstacleThroughYarn(obstacle.name, describeDeepOverlap(*overlap, obstacle, scene_));
+  }
 }
 
 std::vector<TearEvent> Simulator::takeTearEvents() {

@@ -64,13 +64,17 @@ class Simulator {
   void releaseVertex(std::uint32_t vertex);
 
   /// Replaces the obstacles the yarns touch (kept through reset()). Throws
-  /// std::invalid_argument naming the obstacle and field when one is invalid (the old ones stay).
+  /// std::invalid_argument naming the obstacle and field when one is invalid, or
+  /// ObstacleThroughYarn naming the obstacle and the yarn when one not already in place (same
+  /// geometry as a current one) lies through a yarn deeper than half a segment (findDeepOverlap,
+  /// deep_overlap.hpp); the old ones then stay.
   /// When the new ones are the same solids at the same poses (Obstacle::sameGeometry, in the same
   /// order; only friction or names changed), the contacts keep their friction states.
   void setObstacles(const std::vector<Obstacle>& obstacles);
   /// Moves obstacle `index` to `pose` for the next step (a robot link, a finger); points that
-  /// stick to it are carried along. Throws std::out_of_range / std::invalid_argument (non-finite
-  /// or farther than 1e4 m).
+  /// stick to it are carried along. Throws std::out_of_range / std::invalid_argument (non-finite,
+  /// farther than 1e4 m; ObstacleThroughYarn through a yarn as setObstacles); the
+  /// obstacle then stays where it was.
   void setObstaclePose(std::size_t index, const Eigen::Isometry3d& pose);
   const std::vector<Obstacle>& obstacles() const { return obstacles_; }
   /// What the yarns exerted on obstacle `index` in the last step (zero while untouched).
@@ -92,6 +96,9 @@ class Simulator {
   std::uint64_t stepCount() const { return step_count_; }
 
  private:
+  /// Throws ObstacleThroughYarn when `obstacle` lies through a yarn deeper than a step's
+  /// contact resolves (findDeepOverlap).
+  void requireClearOfYarns(const Obstacle& obstacle) const;
   /// Stages 1-6 over parameters_.time_step; advances time_. With `undo_if_unconverged`, a
   /// projection that does not converge undoes the step instead (undoPrediction()) and returns
   /// false (stages 4-6 not run, time_ unchanged).
