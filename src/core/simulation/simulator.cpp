@@ -1,6 +1,7 @@
 #include "yarn_tearing/core/simulation/simulator.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -10,6 +11,7 @@
 #include "yarn_tearing/core/material/material_response.hpp"
 #include "yarn_tearing/core/material/strength_scatter.hpp"
 #include "yarn_tearing/core/simulation/nonfinite_recovery.hpp"
+#include "yarn_tearing/core/simulation/recoil_region.hpp"
 
 namespace yarn_tearing {
 namespace {
@@ -19,6 +21,13 @@ namespace {
 /// growth slow enough for the Newton steps of a still-recoiling piece to converge
 /// (doc/method.md, "Recoil substeps").
 constexpr double kRecoilGrowth = 4.0;
+
+/// A local recoil substeps the yarn within this many times the elastic wave's travel over the
+/// step, c dt, of a tear [-]: the implicit substeps spread the front over a few edges ahead of it.
+constexpr double kRecoilReach = 1.25;
+/// and this many of the torn edge's rest lengths beyond [-], the margin against the boundary
+/// vertices' path (they move on at their velocity while the substeps see their neighbours').
+constexpr double kRecoilMarginEdges = 8.0;
 
 void requireVertex(const Scene& scene, std::uint32_t vertex) {
   if (vertex >= scene.vertices.size()) {
@@ -81,6 +90,7 @@ void Simulator::reset() {
   time_ = 0.0;
   step_count_ = 0;
   recoil_pending_ = false;
+  torn_edges_.clear();
 }
 
 void Simulator::resetWorkspace() {
@@ -104,8 +114,10 @@ void Simulator::resetWorkspace() {
 
 void Simulator::step() {
   const bool can_substep = parameters_.recoil_substeps > 1;
+  std::vector<std::uint32_t> torn;
+  torn.swap(torn_edges_);
   if (recoil_pending_ && can_substep) {
-    advanceInSubsteps(true);
+    if (!(parameters_.local_recoil && recoilLocally(torn))) advanceInSubsteps(true);
   } else if (!advance(can_substep)) {
     advanceInSubsteps(false);  // the whole step did not converge: taken again in substeps
   }
@@ -130,6 +142,7 @@ bool Simulator::advance(bool undo_if_unconverged) {
   previous_pose_.clear();
   for (const Obstacle& o : obstacles_) previous_pose_.push_back(o.pose);
   health_.substeps = 1;
+  health_.substepped_vertices = 0;
   return true;
 }
 
@@ -203,8 +216,89 @@ void Simulator::advanceInSubsteps(bool recoil) {
   whole.restored_yarns.erase(std::unique(whole.restored_yarns.begin(), whole.restored_yarns.end()),
                              whole.restored_yarns.end());
   whole.substeps = count;
+  whole.substepped_vertices = vertices.size();
   health_ = whole;
   recoil_pending_ = tore;
+}
+
+double Simulator::recoilReach(const std::vector<std::uint32_t>& torn) const {
+  double reach = 0.0;
+  for (std::uint32_t e : torn) {
+    const Material& material = scene_.yarns[scene_.edges.yarn[e]].material;
+    const double speed = std::sqrt(material.curve.youngsModulus() / material.density);
+    reach = std::max(reach, kRecoilReach * speed * parameters_.time_step +
+                                kRecoilMarginEdges * scene_.edges.original_rest_length[e]);
+  }
+  return reach;
+}
+
+bool Simulator::recoilLocally(const std::vector<std::uint32_t>& torn) {
+  if (torn.empty() || !obstacles_.empty()) return false;
+  const RecoilRegion region = RecoilRegion::around(scene_, torn, recoilReach(torn));
+  if (!region.usable || 2 * region.vertices.size() > scene_.vertices.size()) return false;
+
+  // The boundary's path: on at its velocity (the wave has not reached the yarn beyond).
+  VertexSet& vertices = scene_.vertices;
+  std::vector<Eigen::Vector3d> target(region.vertices.size(), Eigen::Vector3d::Zero());
+  for (std::size_t i = 0; i < region.vertices.size(); ++i) {
+    const std::uint32_t v = region.vertices[i];
+    if (region.boundary[i])
+      target[i] = vertices.position[v] + parameters_.time_step * vertices.velocity[v];
+  }
+  Simulator local(parameters_, region.subScene(scene_, target));
+  local.work_.tearing = work_.tearing.restrictedTo(region.vertices);
+  local.time_ = time_;
+
+  // The scene's step with the boundary held on that path.
+  const Scene start = scene_;
+  const Tearing start_tearing = work_.tearing;
+  const std::vector<Eigen::Vector3d> start_support = support_force_;
+  const std::size_t start_events = pending_events_.size();
+  const double start_time = time_;
+  const auto undo = [&]() {
+    scene_ = start;
+    resetWorkspace();
+    work_.tearing = start_tearing;
+    support_force_ = start_support;
+    pending_events_.resize(start_events);
+    time_ = start_time;
+    recoil_pending_ = true;
+  };
+  for (std::size_t i = 0; i < region.vertices.size(); ++i) {
+    if (!region.boundary[i]) continue;
+    vertices.motion[region.vertices[i]] = VertexMotion::kKinematic;
+    vertices.kinematic_target[region.vertices[i]] = target[i];
+  }
+  const bool converged = advance(true);
+  for (std::size_t i = 0; i < region.vertices.size(); ++i) {
+    if (!region.boundary[i]) continue;
+    const std::uint32_t v = region.vertices[i];
+    vertices.motion[v] = start.vertices.motion[v];
+    vertices.kinematic_target[v] = start.vertices.kinematic_target[v];
+    support_force_[v].setZero();
+  }
+  if (!converged || health_.breaks > 0 || !health_.restored_yarns.empty()) {
+    undo();
+    return false;
+  }
+
+  // The region in substeps on the same boundary path.
+  local.advanceInSubsteps(true);
+  if (local.health_.breaks > 0 || !local.health_.restored_yarns.empty()) {
+    undo();
+    return false;
+  }
+  region.writeBack(local.scene_, scene_);
+  for (std::size_t i = 0; i < region.vertices.size(); ++i) {
+    if (!region.boundary[i]) support_force_[region.vertices[i]] = local.support_force_[i];
+  }
+  const StepHealth coarse = health_;
+  health_ = local.health_;
+  accumulateHealth(coarse, health_);
+  health_.substeps = local.health_.substeps;
+  health_.substepped_vertices = region.vertices.size();
+  recoil_pending_ = false;
+  return true;
 }
 
 void Simulator::setSubstepTargets(double fraction) {
@@ -326,6 +420,7 @@ void Simulator::tear() {
   if (!parameters_.breaking_enabled) return;
   const std::vector<std::uint32_t>& torn = work_.tearing.collect(scene_, time_);
   health_.breaks = static_cast<int>(torn.size());
+  torn_edges_.insert(torn_edges_.end(), torn.begin(), torn.end());
   work_.tearing.apply(scene_, work_.start_velocity, time_, pending_events_);
 }
 

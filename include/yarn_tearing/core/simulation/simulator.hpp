@@ -104,6 +104,15 @@ class Simulator {
   /// the rest of the step is then taken in substeps growing in length, or in fine substeps again
   /// if one of those does not converge (doc/method.md, "Recoil substeps").
   void advanceInSubsteps(bool recoil);
+  /// The step after the tears of `torn` (global edge ids) with only their RecoilRegion in
+  /// substeps (advanceInSubsteps(true) on the region as a scene of its own), the rest of the scene
+  /// in one step with the region's boundary vertices moved on at their velocities, on the same
+  /// path in both. Returns false, with nothing changed, when the whole scene has to be substepped
+  /// instead (SimulationParameters::local_recoil).
+  bool recoilLocally(const std::vector<std::uint32_t>& torn);
+  /// How far along its yarn a tear of `torn` is substepped [m]: the elastic wave's travel over a
+  /// step in the fastest torn material and a margin for the implicit projection's spread.
+  double recoilReach(const std::vector<std::uint32_t>& torn) const;
   /// Moves the kinematic vertices' targets to `fraction` [-] of the way from the step's start.
   void setSubstepTargets(double fraction);
   void accumulateForces();
@@ -127,6 +136,7 @@ class Simulator {
   double time_ = 0.0;
   std::uint64_t step_count_ = 0;
   bool recoil_pending_ = false;                   ///< the last step tore: substep the next one
+  std::vector<std::uint32_t> torn_edges_;         ///< edges the last step tore (global ids)
   std::vector<Eigen::Vector3d> step_target_;      ///< kinematic targets of the current step [m]
   std::vector<Eigen::Vector3d> step_start_;       ///< kinematic vertices' start positions [m]
   std::vector<Obstacle> obstacles_;               ///< what the yarns touch
