@@ -5,6 +5,7 @@
 
 #include "yarn_tearing/core/contact/obstacle.hpp"
 #include "yarn_tearing/core/model/scene.hpp"
+#include "yarn_tearing/core/simulation/recoil_region.hpp"
 #include "yarn_tearing/core/simulation/simulation_parameters.hpp"
 #include "yarn_tearing/core/simulation/step_health.hpp"
 #include "yarn_tearing/core/simulation/step_workspace.hpp"
@@ -105,14 +106,28 @@ class Simulator {
   /// if one of those does not converge (doc/method.md, "Recoil substeps").
   void advanceInSubsteps(bool recoil);
   /// The step after the tears of `torn` (global edge ids) with only their RecoilRegion in
-  /// substeps (advanceInSubsteps(true) on the region as a scene of its own), the rest of the scene
-  /// in one step with the region's boundary vertices moved on at their velocities, on the same
-  /// path in both. Returns false, with nothing changed, when the whole scene has to be substepped
-  /// instead (SimulationParameters::local_recoil).
+  /// substeps, the rest of the scene in one step with the region's boundary vertices moving on
+  /// at their velocities (stepAroundRegion(), substepRegion()). Returns false, with nothing
+  /// changed, when the whole scene has to be substepped instead
+  /// (SimulationParameters::local_recoil).
   bool recoilLocally(const std::vector<std::uint32_t>& torn);
-  /// How far along its yarn a tear of `torn` is substepped [m]: the elastic wave's travel over a
-  /// step in the fastest torn material and a margin for the implicit projection's spread.
-  double recoilReach(const std::vector<std::uint32_t>& torn) const;
+  /// How far along its yarn a tear of `torn` is substepped `duration` [s] after it [m]: the
+  /// elastic wave's travel in the fastest torn material and a margin for the implicit
+  /// projection's spread of its front.
+  double recoilReach(const std::vector<std::uint32_t>& torn, double duration) const;
+  /// The whole scene's step (from `start`, the scene as it began) with the boundary vertices of
+  /// `region` held on their unaffectedPosition(); false when it did not converge or tore.
+  bool stepAroundRegion(const RecoilRegion& region, const Scene& start);
+  /// Where vertex `v` of `start` is `elapsed` [s] into the step if the recoil does not reach it
+  /// [m]: on at its velocity, or led (kinematic) or pinned.
+  Eigen::Vector3d unaffectedPosition(const Scene& start, std::uint32_t v, double elapsed) const;
+  /// The stages a local recoil grows its region in [-].
+  int recoilStages() const;
+  /// Substeps `region` from `start` (tearing state `start_tearing`) in recoilStages() stages of
+  /// growing regions and writes it over the step stepAroundRegion() took; false when a substep
+  /// tore or left a non-finite value.
+  bool substepRegion(const RecoilRegion& region, const std::vector<std::uint32_t>& torn,
+                     const Scene& start, const Tearing& start_tearing);
   /// Moves the kinematic vertices' targets to `fraction` [-] of the way from the step's start.
   void setSubstepTargets(double fraction);
   void accumulateForces();
