@@ -130,5 +130,56 @@ TEST(LocalRecoil, MatchesTheWholeSceneRecoilOfAHangingYarnPulledApart) {
   }
 }
 
+/// Two like hanging yarns of 600 vertices whose end forces ramp up alike, the second's one step
+/// later: the second tears in the step that resolves the first's recoil, which a local recoil
+/// then takes in whole-scene substeps. Both recoils give the same break events, once each.
+TEST(LocalRecoil, ATearDuringTheRecoilGivesTheSameEventsOnce) {
+  YarnSpec first = hangingYarn();
+  first.num_vertices = 600;
+  first.length = 0.0125 * (first.num_vertices - 1);
+  first.end_mass = 0.01;
+  YarnSpec second = first;
+  second.name = "second";
+  second.start = Eigen::Vector3d(0.1, 0.0, 0.0);
+  SimulationParameters p;
+  p.air_damping = 0.05;
+  Simulator local(p, {first, second});
+  p.local_recoil = false;
+  Simulator whole(p, {first, second});
+  const double breaking_force = first.material.curve.breakingStress() * first.area();
+  const double ramp = 40.0 * breaking_force;  // [N/s]
+  std::vector<TearEvent> local_events;
+  std::vector<TearEvent> whole_events;
+  for (int i = 0; i < 100; ++i) {
+    for (Simulator* sim : {&local, &whole}) {
+      for (std::size_t yarn = 0; yarn < 2; ++yarn) {
+        const double t = std::max(0.0, sim->time() - static_cast<double>(yarn) * p.time_step);
+        sim->setAppliedForce(sim->scene().globalVertex(yarn, -1),
+                             Eigen::Vector3d(0.0, 0.0, -ramp * t));
+      }
+      sim->step();
+    }
+    const std::vector<TearEvent> events = local.takeTearEvents();
+    if (local_events.size() == 1 && !events.empty()) {
+      EXPECT_EQ(local.lastHealth().substepped_vertices, local.scene().vertices.size());
+    }
+    local_events.insert(local_events.end(), events.begin(), events.end());
+    for (const TearEvent& e : whole.takeTearEvents()) whole_events.push_back(e);
+  }
+  ASSERT_EQ(local_events.size(), 2u);
+  ASSERT_EQ(whole_events.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(local_events[i].yarn, whole_events[i].yarn);
+    EXPECT_EQ(local_events[i].edge, whole_events[i].edge);
+    EXPECT_NEAR(local_events[i].time, whole_events[i].time, p.time_step / p.recoil_substeps);
+    EXPECT_LE(local_events[i].tension, 1.0001 * breaking_force);
+  }
+  std::cout << "tears at " << local_events[0].time << " s and " << local_events[1].time
+            << " s (whole-scene recoil: " << whole_events[0].time << ", " << whole_events[1].time
+            << ")\n";
+  EXPECT_GT(local_events[1].time, local_events[0].time);
+  EXPECT_LE(local_events[1].time, local_events[0].time + p.time_step);
+}
+
 }  // namespace
 }  // namespace yarn_tearing::test

@@ -257,6 +257,7 @@ bool Simulator::recoilLocally(const std::vector<std::uint32_t>& torn) {
   work_.tearing = start_tearing;
   support_force_ = start_support;
   pending_events_.resize(start_events);
+  torn_edges_.clear();  // what the undone step tore
   time_ = start_time;
   recoil_pending_ = true;
   return false;
