@@ -225,8 +225,13 @@ void BM_StageMaterialAndTearing(benchmark::State& state) {
 /// The step right after a tear, which resolves the recoil in recoil_substeps substeps: the settled
 /// yarn's end pulled at twice the breaking force until it tears, then that state stepped once
 /// (copying it back is not timed). Its cost over a plain step's is the recoil's price per tear.
-void BM_StepAfterTear(benchmark::State& state) {
+/// With `local`, the recoil substeps only the torn edge's neighbourhood
+/// (SimulationParameters::local_recoil); without, the whole yarn.
+void stepAfterTear(benchmark::State& state, bool local) {
   Simulator torn = settledYarn(static_cast<int>(state.range(0)));
+  SimulationParameters parameters = torn.parameters();
+  parameters.local_recoil = local;
+  torn.setParameters(parameters);
   const std::uint32_t end = torn.scene().globalVertex(0, -1);
   torn.setAppliedForce(end, Eigen::Vector3d(0.0, 0.0, -2.0 * 4.86e8 * torn.scene().edges.area[0]));
   while (!torn.recoilPending()) torn.step();
@@ -239,7 +244,13 @@ void BM_StepAfterTear(benchmark::State& state) {
     benchmark::ClobberMemory();
   }
   state.SetComplexityN(state.range(0));
+  state.counters["substeps"] = sim.lastHealth().substeps;
+  state.counters["substepped_vertices"] = static_cast<double>(sim.lastHealth().substepped_vertices);
 }
+
+void BM_StepAfterTear(benchmark::State& state) { stepAfterTear(state, true); }
+
+void BM_StepAfterTearWholeScene(benchmark::State& state) { stepAfterTear(state, false); }
 
 #define YARN_SIZES Arg(25)->Arg(100)->Arg(1000)->Arg(10000)->Complexity(benchmark::oN)
 
@@ -247,6 +258,7 @@ BENCHMARK(BM_Step)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StepBouncing)->YARN_SIZES->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FirstSecondAfterRelease)->YARN_SIZES->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StepAfterTear)->Arg(25)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StepAfterTearWholeScene)->Arg(25)->Arg(1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_HeldSpan)
     ->Args({25, 3})
     ->Args({25, 4})

@@ -64,6 +64,15 @@ void Tearing::apply(Scene& scene, const std::vector<Eigen::Vector3d>& start_velo
   collected_.clear();
 }
 
+Tearing Tearing::restrictedTo(const std::vector<std::uint32_t>& vertices) const {
+  Tearing restricted;
+  restricted.unloading_end_ = unloading_end_;
+  if (unloaded_at_.empty()) return restricted;
+  restricted.unloaded_at_.reserve(vertices.size());
+  for (std::uint32_t v : vertices) restricted.unloaded_at_.push_back(unloaded_at_[v]);
+  return restricted;
+}
+
 void Tearing::startUnloading(const Scene& scene, double time) {
   // Each torn piece unloads by an elastic wave from the tear, at c = sqrt(E / rho) of the torn
   // edge's material; it takes about the piece's extent over c (the diagonal of its box: a taut

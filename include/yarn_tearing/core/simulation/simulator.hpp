@@ -5,6 +5,7 @@
 
 #include "yarn_tearing/core/contact/obstacle.hpp"
 #include "yarn_tearing/core/model/scene.hpp"
+#include "yarn_tearing/core/simulation/recoil_region.hpp"
 #include "yarn_tearing/core/simulation/simulation_parameters.hpp"
 #include "yarn_tearing/core/simulation/step_health.hpp"
 #include "yarn_tearing/core/simulation/step_workspace.hpp"
@@ -111,6 +112,29 @@ class Simulator {
   /// the rest of the step is then taken in substeps growing in length, or in fine substeps again
   /// if one of those does not converge (doc/method.md, "Recoil substeps").
   void advanceInSubsteps(bool recoil);
+  /// The step after the tears of `torn` (global edge ids) with only their RecoilRegion in
+  /// substeps, the rest of the scene in one step with the region's boundary vertices moving on
+  /// at their velocities (stepAroundRegion(), substepRegion()). Returns false, with nothing
+  /// changed, when the whole scene has to be substepped instead
+  /// (SimulationParameters::local_recoil).
+  bool recoilLocally(const std::vector<std::uint32_t>& torn);
+  /// How far along its yarn a tear of `torn` is substepped `duration` [s] after it [m]: the
+  /// elastic wave's travel in the fastest torn material and a margin for the implicit
+  /// projection's spread of its front.
+  double recoilReach(const std::vector<std::uint32_t>& torn, double duration) const;
+  /// The whole scene's step (from `start`, the scene as it began) with the boundary vertices of
+  /// `region` held on their unaffectedPosition(); false when it did not converge or tore.
+  bool stepAroundRegion(const RecoilRegion& region, const Scene& start);
+  /// Where vertex `v` of `start` is `elapsed` [s] into the step if the recoil does not reach it
+  /// [m]: on at its velocity, or led (kinematic) or pinned.
+  Eigen::Vector3d unaffectedPosition(const Scene& start, std::uint32_t v, double elapsed) const;
+  /// The stages a local recoil grows its region in [-].
+  int recoilStages() const;
+  /// Substeps `region` from `start` (tearing state `start_tearing`) in recoilStages() stages of
+  /// growing regions and writes it over the step stepAroundRegion() took; false when a substep
+  /// tore or left a non-finite value.
+  bool substepRegion(const RecoilRegion& region, const std::vector<std::uint32_t>& torn,
+                     const Scene& start, const Tearing& start_tearing);
   /// Moves the kinematic vertices' targets to `fraction` [-] of the way from the step's start.
   void setSubstepTargets(double fraction);
   void accumulateForces();
@@ -134,6 +158,7 @@ class Simulator {
   double time_ = 0.0;
   std::uint64_t step_count_ = 0;
   bool recoil_pending_ = false;                   ///< the last step tore: substep the next one
+  std::vector<std::uint32_t> torn_edges_;         ///< edges the last step tore (global ids)
   std::vector<Eigen::Vector3d> step_target_;      ///< kinematic targets of the current step [m]
   std::vector<Eigen::Vector3d> step_start_;       ///< kinematic vertices' start positions [m]
   std::vector<Obstacle> obstacles_;               ///< what the yarns touch

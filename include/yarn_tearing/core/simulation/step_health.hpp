@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -26,6 +27,9 @@ struct StepHealth {
   /// converge (the other fields are then the worst substep's, breaks and restored_yarns their
   /// union).
   int substeps = 1;
+  /// Vertices those substeps moved [-]: the scene's, or a local recoil's region
+  /// (SimulationParameters::local_recoil); 0 for a step taken in one.
+  std::size_t substepped_vertices = 0;
 };
 
 /// Folds one substep's health into the whole step's `whole`: the worst of each measure, the

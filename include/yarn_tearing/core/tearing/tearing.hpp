@@ -27,6 +27,9 @@ class Tearing {
   /// When the last of the pieces torn so far has unloaded (its tear's time plus the elastic
   /// wave's crossing time, extent / c) [s]; -1 before any tear.
   double unloadingEnd() const { return unloading_end_; }
+  /// This state for a sub-scene made of the vertices `vertices` (global ids, in the sub-scene's
+  /// order): each vertex keeps the end of its piece's unloading [s], and the latest end stays.
+  Tearing restrictedTo(const std::vector<std::uint32_t>& vertices) const;
 
  private:
   /// Whether edge e's piece is still unloading from an earlier tear at `time` [s].
