@@ -2,13 +2,14 @@
 // where the obstacle is set or moved (it stays as it was, the scene keeps stepping at a normal
 // step's cost); a touch, and an obstacle pressed in at a robot's speed, are taken by the contact
 // and pushed out within the step.
+#include "yarn_tearing/core/contact/deep_overlap.hpp"
+
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <string>
 
 #include "fabric_support.hpp"
-#include "yarn_tearing/core/contact/deep_overlap.hpp"
 
 namespace yarn_tearing::test {
 namespace {
@@ -70,8 +71,7 @@ TEST(DeepOverlap, SolidsThroughAPatchAreRefusedNamingObstacleAndYarn) {
   Obstacle plane;  // the solid z <= middle's height: the patch's lower half inside it
   plane.name = "plane";
   plane.pose.translation() = middle;
-  for (const Obstacle& solid :
-       {ball(middle, 0.015), box, ball(middle, 1.0e4), plane}) {
+  for (const Obstacle& solid : {ball(middle, 0.015), box, ball(middle, 1.0e4), plane}) {
     try {
       sim.setObstacles({solid});
       ADD_FAILURE() << solid.name << " through the patch was taken";

@@ -14,8 +14,7 @@ bool isFree(const VertexSet& vertices, std::uint32_t v) {
 
 /// How far a yarn of radius `radius` [m] centred at `p` lies inside `obstacle` [m] (negative
 /// when clear of it).
-double depthAt(const Obstacle& obstacle, const Eigen::Vector3d& p, double radius,
-               double rounding) {
+double depthAt(const Obstacle& obstacle, const Eigen::Vector3d& p, double radius, double rounding) {
   return radius - obstacle.signedDistance(p, rounding);
 }
 

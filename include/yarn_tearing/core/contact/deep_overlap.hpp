@@ -21,7 +21,7 @@ struct DeepOverlap {
   std::uint32_t edge = 0;    ///< the segment (global edge id) whose point is deepest [-]
   std::uint32_t vertex = 0;  ///< its vertex nearer the deepest point (global id) [-]
   double depth = 0.0;        ///< how far the yarn's surface lies inside the solid [m]
-  double allowed = 0.0;      ///< the depth a step resolves there: half the segment's rest length [m]
+  double allowed = 0.0;  ///< the depth a step resolves there: half the segment's rest length [m]
 };
 
 /// Fraction of a segment's rest length a yarn point may lie inside an obstacle [-].
