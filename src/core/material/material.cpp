@@ -7,6 +7,10 @@
 
 namespace yarn_tearing {
 
+double Material::snapBackSpeed() const {
+  return std::sqrt(curve.youngsModulus() / density) * curve.breakingStrain();
+}
+
 void Material::validate() const {
   if (!std::isfinite(density) || density <= 0.0) {
     throw std::invalid_argument("material " + name + ": density must be > 0 [kg/m^3], got " +

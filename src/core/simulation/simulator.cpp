@@ -12,6 +12,7 @@
 #include "yarn_tearing/core/forces/fabric_shear.hpp"
 #include "yarn_tearing/core/material/material_response.hpp"
 #include "yarn_tearing/core/material/strength_scatter.hpp"
+#include "yarn_tearing/core/simulation/held_target_limit.hpp"
 #include "yarn_tearing/core/simulation/nonfinite_recovery.hpp"
 #include "yarn_tearing/core/simulation/recoil_region.hpp"
 
@@ -122,6 +123,7 @@ void Simulator::resetWorkspace() {
 }
 
 void Simulator::step() {
+  const std::vector<RequestedTarget> requested = limitHeldTargets(scene_, parameters_.time_step);
   const bool can_substep = parameters_.recoil_substeps > 1;
   std::vector<std::uint32_t> torn;
   torn.swap(torn_edges_);
@@ -130,6 +132,7 @@ void Simulator::step() {
   } else if (!advance(can_substep)) {
     advanceInSubsteps(false);  // the whole step did not converge: taken again in substeps
   }
+  restoreHeldTargets(requested, scene_);
   ++step_count_;
 }
 

@@ -57,7 +57,8 @@ class Simulator {
 
   /// Sets the external force on a vertex (global id) [N]; replaces the previous one.
   void setAppliedForce(std::uint32_t vertex, const Eigen::Vector3d& force);
-  /// Makes a vertex kinematic: from the next step it moves to `target` [m] (global id).
+  /// Makes a vertex kinematic: from the next step it moves to `target` [m] (global id), by at
+  /// most its yarn's snap-back speed c * eps_b per step (held_target_limit.hpp).
   void setKinematicTarget(std::uint32_t vertex, const Eigen::Vector3d& target);
   /// Sets the velocity of a free vertex [m/s] (initial conditions; global id).
   void setVelocity(std::uint32_t vertex, const Eigen::Vector3d& velocity);
