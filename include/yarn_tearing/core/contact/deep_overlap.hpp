@@ -15,8 +15,7 @@ namespace yarn_tearing {
 /// push a point out within the step in which it is found inside; a point found half a segment
 /// deep or more is a solid placed through the yarn, not a touch: pushing it out in one step
 /// throws its vertices at depth / dt and tears its segments, and each Newton step of the
-/// projection then starts far from the solution (a 3 cm ball through a 16 x 12 patch: 2 s for
-/// the first step, two tears; the patch inside a 1 m box: no first step within 100 s).
+/// projection then starts far from the solution (doc/contact.md, "Obstacles through a yarn").
 struct DeepOverlap {
   std::uint32_t edge = 0;    ///< the segment (global edge id) whose point is deepest [-]
   std::uint32_t vertex = 0;  ///< its vertex nearer the deepest point (global id) [-]

@@ -12,8 +12,7 @@ namespace yarn_tearing {
 /// c * eps_b per step (Material::snapBackSpeed: 160 m/s for cotton). No load can move a yarn
 /// faster, so a faster grasp only tears the yarn at the grasp, as it does at that speed; and a
 /// target jumping metres per step (a tf frame teleported) would throw the vertices it drags at
-/// that speed and leave the projection far from its solution (a 16 x 12 patch's corner jumping
-/// 1 km: a 63 s step that did not converge).
+/// that speed and start the projection far from its solution (doc/node.md, "Bad input").
 struct RequestedTarget {
   std::uint32_t vertex = 0;  ///< global vertex id [-]
   Eigen::Vector3d target;    ///< where the vertex was asked to go [m]
