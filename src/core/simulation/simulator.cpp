@@ -332,7 +332,13 @@ bool Simulator::substepRegion(const RecoilRegion& region, const std::vector<std:
         grown.vertices.kinematic_target[v] = unaffectedPosition(start, v, end);
       }
     }
-    Simulator local(stage_parameters, part.subScene(grown, target));
+    std::optional<Simulator> built;
+    try {
+      built.emplace(stage_parameters, part.subScene(grown, target));
+    } catch (const std::invalid_argument&) {
+      return false;  // a sub-scene that does not validate: the whole scene is substepped instead
+    }
+    Simulator& local = *built;
     local.work_.tearing = start_tearing.restrictedTo(part.vertices);
     local.time_ = time_ - dt + begin;
     local.advanceInSubsteps(true);
