@@ -66,6 +66,16 @@ void report(const char* scene, const Difference& d) {
             << d.position << " m, tensions within " << d.tension << " F_b\n";
 }
 
+/// Reports `d` and checks that the local recoil substepped part of the scene and stayed within
+/// the whole-scene recoil's kinetic energy [-], positions [m] and tensions [F_b].
+void expectLikeTheWholeScene(const char* scene, const Difference& d) {
+  report(scene, d);
+  EXPECT_GT(d.substepped, 0u) << scene;
+  EXPECT_LE(d.kinetic, 3.0e-4) << scene;
+  EXPECT_LE(d.position, 1.0e-3) << scene;
+  EXPECT_LE(d.tension, 0.02) << scene;
+}
+
 /// A 15 m cotton yarn of 1200 vertices along +x, vertex 0 pinned, its last drawn at 0.2 m/s
 /// from just below the breaking strain of its weak middle edge (a fifth of the yarn's strength,
 /// so it tears in the elastic range), stepped until that edge tears.
@@ -95,12 +105,8 @@ TEST(LocalRecoil, MatchesTheWholeSceneRecoilOfADrawnYarn) {
   const double breaking_force = factor * curve.breakingStress() * spec.area();
   for (int steps : {1, 3}) {
     const Difference d = compareRecoils(sim, steps, breaking_force, drawn, draw);
-    report(steps == 1 ? "drawn yarn, 1 step" : "drawn yarn, 3 steps", d);
-    EXPECT_GT(d.substepped, 0u);
+    expectLikeTheWholeScene(steps == 1 ? "drawn yarn, 1 step" : "drawn yarn, 3 steps", d);
     EXPECT_LT(2 * d.substepped, d.vertices);
-    EXPECT_LE(d.kinetic, 3.0e-4);
-    EXPECT_LE(d.position, 1.0e-3);
-    EXPECT_LE(d.tension, 0.02);
   }
 }
 
@@ -122,11 +128,8 @@ TEST(LocalRecoil, MatchesTheWholeSceneRecoilOfAHangingYarnPulledApart) {
   ASSERT_EQ(sim.takeTearEvents().size(), 1u);
   for (int steps : {1, 3}) {
     const Difference d = compareRecoils(sim, steps, breaking_force);
-    report(steps == 1 ? "pulled hanging yarn, 1 step" : "pulled hanging yarn, 3 steps", d);
-    EXPECT_GT(d.substepped, 0u);
-    EXPECT_LE(d.kinetic, 3.0e-4);
-    EXPECT_LE(d.position, 1.0e-3);
-    EXPECT_LE(d.tension, 0.02);
+    expectLikeTheWholeScene(
+        steps == 1 ? "pulled hanging yarn, 1 step" : "pulled hanging yarn, 3 steps", d);
   }
 }
 
