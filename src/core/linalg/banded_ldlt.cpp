@@ -6,17 +6,25 @@
 namespace yarn_tearing {
 
 bool BandedLdlt::factorize(const std::vector<Eigen::Triplet<double>>& entries, int n) {
-  size_ = n;
-  bandwidth_ = 0;
+  int bandwidth = 0;
   for (const Eigen::Triplet<double>& t : entries) {
-    if (t.row() >= t.col()) bandwidth_ = std::max(bandwidth_, t.row() - t.col());
+    if (t.row() >= t.col()) bandwidth = std::max(bandwidth, t.row() - t.col());
   }
+  begin(n, bandwidth);
+  for (const Eigen::Triplet<double>& t : entries) add(t.row(), t.col(), t.value());
+  return factorize();
+}
+
+void BandedLdlt::begin(int n, int half_bandwidth) {
+  size_ = n;
+  bandwidth_ = half_bandwidth;
+  matrix_.assign(static_cast<std::size_t>(n) * (half_bandwidth + 1), 0.0);
+}
+
+bool BandedLdlt::factorize() {
+  const int n = size_;
   const int b = bandwidth_;
   const int stride = b + 1;
-  matrix_.assign(static_cast<std::size_t>(n) * stride, 0.0);
-  for (const Eigen::Triplet<double>& t : entries) {
-    if (t.row() >= t.col()) at(matrix_, t.row(), t.col()) += t.value();
-  }
   factor_ = matrix_;
   // Column by column (right-looking): L_ij = A_ij / d_j, then the trailing triangle of the band
   // loses l d l^T; its updates are independent, so the elimination is bound by throughput rather

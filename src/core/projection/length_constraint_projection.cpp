@@ -145,8 +145,9 @@ void LengthConstraintProjection::chooseCorrectionDirections(
   // (omega dt)^2 scales with dt^2: a step of another length (recoil substeps) rescales it.
   const double limit = kStartDirectionStiffness * last_time_step2_ / time_step2_;
   updateHeldVertices(edges);
+  // A support does not move: which direction its correction would take does not matter.
   const auto slow = [&](std::uint32_t v) {
-    return held_vertex_[v] != 0 && last_stiffness_[v] <= limit;
+    return inverse_mass_[v] > 0.0 && held_vertex_[v] != 0 && last_stiffness_[v] <= limit;
   };
   start_direction_.resize(edges.size());
   for (std::size_t e = 0; e < edges.size(); ++e) {
@@ -164,21 +165,55 @@ void LengthConstraintProjection::chooseCorrectionDirections(
   }
 }
 
-void LengthConstraintProjection::updateHeldVertices(const EdgeSet& edges) {
-  // The pieces change only where an edge tore or a vertex was pinned, grasped or released:
-  // regroup only when the intact edges or the supports differ from the last time.
-  const std::size_t n = inverse_mass_.size();
+std::uint64_t LengthConstraintProjection::piecesSignature(const EdgeSet& edges) const {
+  // The pieces change only where an edge tore or a vertex was pinned, grasped or released.
   std::uint64_t intact = 0;
   std::uint64_t supports = 0;
   std::uint64_t support_sum = 0;
   for (std::size_t e = 0; e < edges.size(); ++e) intact += edges.intact(e) ? 1 : 0;
-  for (std::size_t v = 0; v < n; ++v) {
+  for (std::size_t v = 0; v < inverse_mass_.size(); ++v) {
     const bool support = inverse_mass_[v] == 0.0;
     supports += support ? 1 : 0;
     support_sum += support ? v : 0;
   }
   // Edges only tear (a restored yarn starts a new projection), so their count tells a change.
-  const std::uint64_t signature = (intact << 40) ^ (supports << 20) ^ support_sum;
+  return (intact << 40) ^ (supports << 20) ^ support_sum;
+}
+
+void LengthConstraintProjection::startFromLastCorrection(std::vector<Eigen::Vector3d>& position,
+                                                         const EdgeSet& edges) {
+  // The constraint forces change little from one step to the next while the pieces stay the
+  // same: the free vertices start where the last step's constraint impulses (rescaled by dt^2)
+  // would put them from the prediction. The fixed point is the prediction's; only the Newton
+  // steps' start moves, by the change of those impulses over a step rather than by the
+  // impulses themselves.
+  if (last_correction_.size() != position.size() ||
+      piecesSignature(edges) != correction_signature_) {
+    return;
+  }
+  const double scale = time_step2_ / last_time_step2_;
+  for (std::size_t v = 0; v < position.size(); ++v) {
+    if (inverse_mass_[v] > 0.0) position[v] += scale * last_correction_[v];
+  }
+}
+
+void LengthConstraintProjection::keepCorrection(const std::vector<Eigen::Vector3d>& position,
+                                                const EdgeSet& edges, bool contact_free) {
+  if (!contact_free) {
+    last_correction_.clear();
+    return;
+  }
+  last_correction_.resize(position.size());
+  for (std::size_t v = 0; v < position.size(); ++v) {
+    last_correction_[v] = position[v] - predicted_[v];
+  }
+  correction_signature_ = piecesSignature(edges);
+}
+
+void LengthConstraintProjection::updateHeldVertices(const EdgeSet& edges) {
+  // Regroup only when the intact edges or the supports differ from the last time.
+  const std::size_t n = inverse_mass_.size();
+  const std::uint64_t signature = piecesSignature(edges);
   if (held_vertex_.size() == n && signature == held_signature_) return;
   held_signature_ = signature;
   pieces_.build(edges, n);
@@ -328,6 +363,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
   FastLoop loop;
   // The Newton steps do not keep vertices on faces (on_faces_): not for those.
   loop.newton_first = contacts == nullptr && !on_faces_ && newtonFirst(edges.size());
+  if (loop.newton_first && fast_contacts_ == nullptr) startFromLastCorrection(position, edges);
   ProjectionResult result;
   measureIterate(position, edges, contacts, result);
   resetCorrectionDirections(edges.size());
@@ -366,6 +402,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
     measureIterate(position, edges, contacts, result);
   }
   endFastProjection(edges, loop, result.converged);
+  keepCorrection(position, edges, contacts == nullptr && fast_contacts_ == nullptr);
   return result;
 }
 

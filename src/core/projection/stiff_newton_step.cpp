@@ -6,17 +6,6 @@
 #include "yarn_tearing/core/contact/sliding_friction_stiffness.hpp"
 
 namespace yarn_tearing {
-namespace {
-
-void addBlock(std::vector<Eigen::Triplet<double>>& triplets, int row, int col,
-              const Eigen::Matrix3d& block) {
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) triplets.emplace_back(row + i, col + j, block(i, j));
-  }
-}
-
-}  // namespace
-
 bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
                             const std::vector<double>& inverse_mass, const EdgeSet& edges,
                             const EdgeIncidence& incidence, const EdgeStretchState& stretch_state,
@@ -24,7 +13,12 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
                             const std::vector<Eigen::Vector3d>& position,
                             const std::vector<double>& multiplier, const ContactSet* contacts) {
   const int rows = numberRows(inverse_mass, edges, incidence, taut, contacts);
+  // A chain without contact rows is assembled straight into dense band storage; with them, whose
+  // wraps are factorized near the round-off that decides where a wrap tears, on the sparse
+  // LDL^T in natural order.
+  dense_band_ = banded_ && contacts == nullptr;
   triplets_.clear();
+  if (dense_band_) dense_band_factorization_.begin(rows, chainBandwidth(edges));
   rhs_.setZero(rows);
   addVertexRows(predicted, inverse_mass, position);
   if (!addEdgeRows(edges, stretch_state, position, multiplier)) return false;
@@ -81,6 +75,28 @@ int StiffNewtonStep::numberRows(const std::vector<double>& inverse_mass, const E
   return rows;
 }
 
+void StiffNewtonStep::addBlock(int row, int col, const Eigen::Matrix3d& block) {
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) addEntry(row + i, col + j, block(i, j));
+  }
+}
+
+int StiffNewtonStep::chainBandwidth(const EdgeSet& edges) const {
+  // The farthest below the diagonal an edge's entries reach: its row from its first vertex's,
+  // its geometric stiffness from one vertex's rows to the other's.
+  int bandwidth = 2;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const int re = edge_row_[e];
+    if (re < 0) continue;
+    const int ra = vertex_row_[edges.vertex_a[e]];
+    const int rb = vertex_row_[edges.vertex_b[e]];
+    const int first = ra >= 0 ? ra : rb;
+    if (first >= 0) bandwidth = std::max(bandwidth, re - first);
+    if (ra >= 0 && rb >= 0) bandwidth = std::max(bandwidth, std::abs(rb - ra) + 2);
+  }
+  return bandwidth;
+}
+
 void StiffNewtonStep::addVertexRows(const std::vector<Eigen::Vector3d>& predicted,
                                     const std::vector<double>& inverse_mass,
                                     const std::vector<Eigen::Vector3d>& position) {
@@ -89,8 +105,8 @@ void StiffNewtonStep::addVertexRows(const std::vector<Eigen::Vector3d>& predicte
     const int r = vertex_row_[v];
     if (r < 0) continue;
     const double mass = 1.0 / inverse_mass[v];
-    if (fixed_pattern) addBlock(triplets_, r, r, Eigen::Matrix3d::Zero());
-    for (int i = 0; i < 3; ++i) triplets_.emplace_back(r + i, r + i, mass);
+    if (fixed_pattern) addBlock(r, r, Eigen::Matrix3d::Zero());
+    for (int i = 0; i < 3; ++i) addEntry(r + i, r + i, mass);
     rhs_.segment<3>(r) = -mass * (position[v] - predicted[v]);
   }
 }
@@ -120,23 +136,23 @@ bool StiffNewtonStep::addEdgeRows(const EdgeSet& edges, const EdgeStretchState& 
     }
     // A taut and an idle row list the same entries in the same order, so that the pattern
     // (PatternCachedLdlt) holds while the taut set changes.
-    if (ra >= 0) addBlock(triplets_, ra, ra, g);
-    if (rb >= 0) addBlock(triplets_, rb, rb, g);
+    if (ra >= 0) addBlock(ra, ra, g);
+    if (rb >= 0) addBlock(rb, rb, g);
     if (ra >= 0 && rb >= 0) {
-      addBlock(triplets_, ra, rb, -g);
-      addBlock(triplets_, rb, ra, -g);
+      addBlock(ra, rb, -g);
+      addBlock(rb, ra, -g);
     }
     for (int i = 0; i < 3; ++i) {
       if (ra >= 0) {
-        triplets_.emplace_back(re, ra + i, -dir[i]);
-        triplets_.emplace_back(ra + i, re, -dir[i]);
+        addEntry(re, ra + i, -dir[i]);
+        addEntry(ra + i, re, -dir[i]);
       }
       if (rb >= 0) {
-        triplets_.emplace_back(re, rb + i, dir[i]);
-        triplets_.emplace_back(rb + i, re, dir[i]);
+        addEntry(re, rb + i, dir[i]);
+        addEntry(rb + i, re, dir[i]);
       }
     }
-    triplets_.emplace_back(re, re, diagonal);
+    addEntry(re, re, diagonal);
   }
   return true;
 }
@@ -160,13 +176,10 @@ bool StiffNewtonStep::solveUnsymmetric(int rows) {
 }
 
 bool StiffNewtonStep::solveSymmetric(int rows, const ContactSet* contacts) {
-  // A chain without contact rows on dense band storage; with them, whose wraps are factorized
-  // near the round-off that decides where a wrap tears, on the sparse LDL^T in natural order.
-  dense_band_ = banded_ && contacts == nullptr;
   // The dense band keeps its own copy of the matrix (refine()).
   if ((banded_ && !dense_band_) || (refine_ && !banded_)) assembleMatrix(rows);
   if (dense_band_) {
-    if (!dense_band_factorization_.factorize(triplets_, rows)) return false;
+    if (!dense_band_factorization_.factorize()) return false;
   } else if (banded_) {
     sparse_band_factorization_.ldlt.compute(matrix_);
     if (sparse_band_factorization_.ldlt.info() != Eigen::Success) return false;
@@ -391,15 +404,15 @@ void StiffNewtonStep::addContactRows(const ContactSet& contacts,
     const auto row = [&](int r, const Eigen::Vector3d& d, double rhs) {
       for (int k = 0; k < 3; ++k) {
         if (ra >= 0) {
-          triplets_.emplace_back(r, ra + k, -wa * d[k]);
-          triplets_.emplace_back(ra + k, r, -wa * d[k]);
+          addEntry(r, ra + k, -wa * d[k]);
+          addEntry(ra + k, r, -wa * d[k]);
         }
         if (rb >= 0) {
-          triplets_.emplace_back(r, rb + k, -wb * d[k]);
-          triplets_.emplace_back(rb + k, r, -wb * d[k]);
+          addEntry(r, rb + k, -wb * d[k]);
+          addEntry(rb + k, r, -wb * d[k]);
         }
       }
-      triplets_.emplace_back(r, r, -shift);
+      addEntry(r, r, -shift);
       rhs_[r] = rhs;
     };
     if (normal_row_[i] >= 0) {
@@ -408,11 +421,11 @@ void StiffNewtonStep::addContactRows(const ContactSet& contacts,
       // without it a light vertex pressed onto a post by a taut wrap buzzes sideways and grows.
       if (c.normal_multiplier > 0.0) {
         const Eigen::Matrix3d h = -c.normal_multiplier * contacts.curvature(c, position);
-        if (ra >= 0) addBlock(triplets_, ra, ra, wa * wa * h);
-        if (rb >= 0) addBlock(triplets_, rb, rb, wb * wb * h);
+        if (ra >= 0) addBlock(ra, ra, wa * wa * h);
+        if (rb >= 0) addBlock(rb, rb, wb * wb * h);
         if (ra >= 0 && rb >= 0) {
-          addBlock(triplets_, ra, rb, wa * wb * h);
-          addBlock(triplets_, rb, ra, wa * wb * h);
+          addBlock(ra, rb, wa * wb * h);
+          addBlock(rb, ra, wa * wb * h);
         }
         // The closest point moving along a turning segment: -m_n times the Hessian's second
         // part (ContactSet::closestPointTurn). Without it a segment pivoting about a point it
@@ -423,11 +436,11 @@ void StiffNewtonStep::addContactRows(const ContactSet& contacts,
         if (contacts.closestPointTurn(c, position, turn, second)) {
           const Eigen::Matrix<double, 6, 6> g =
               (c.normal_multiplier / second) * turn * turn.transpose();
-          if (ra >= 0) addBlock(triplets_, ra, ra, g.topLeftCorner<3, 3>());
-          if (rb >= 0) addBlock(triplets_, rb, rb, g.bottomRightCorner<3, 3>());
+          if (ra >= 0) addBlock(ra, ra, g.topLeftCorner<3, 3>());
+          if (rb >= 0) addBlock(rb, rb, g.bottomRightCorner<3, 3>());
           if (ra >= 0 && rb >= 0) {
-            addBlock(triplets_, ra, rb, g.topRightCorner<3, 3>());
-            addBlock(triplets_, rb, ra, g.bottomLeftCorner<3, 3>());
+            addBlock(ra, rb, g.topRightCorner<3, 3>());
+            addBlock(rb, ra, g.bottomLeftCorner<3, 3>());
           }
         }
       }
@@ -455,15 +468,15 @@ void StiffNewtonStep::addContactRows(const ContactSet& contacts,
       Eigen::Vector3d on_b;
       if (r < 0 || !stickingRowTurn(contacts, c, k, slip, position, on_a, on_b)) continue;
       for (int j = 0; j < 3; ++j) {
-        if (ra >= 0) triplets_.emplace_back(r, ra + j, on_a[j]);
-        if (rb >= 0) triplets_.emplace_back(r, rb + j, on_b[j]);
+        if (ra >= 0) addEntry(r, ra + j, on_a[j]);
+        if (rb >= 0) addEntry(r, rb + j, on_b[j]);
       }
     }
     unsymmetric_ = true;
     const int rn = normal_row_[i];
     for (int k = 0; k < 3; ++k) {
-      if (ra >= 0) triplets_.emplace_back(ra + k, rn, -wa * sliding[k]);
-      if (rb >= 0) triplets_.emplace_back(rb + k, rn, -wb * sliding[k]);
+      if (ra >= 0) addEntry(ra + k, rn, -wa * sliding[k]);
+      if (rb >= 0) addEntry(rb + k, rn, -wb * sliding[k]);
     }
     // The sliding impulse turns with the segment and the surface: its derivative (as the edges'
     // geometric stiffness), without which a fast slide's Newton steps converge only linearly.
@@ -473,11 +486,11 @@ void StiffNewtonStep::addContactRows(const ContactSet& contacts,
     }
     SlidingFrictionStiffness blocks;
     if (!slidingFrictionStiffness(contacts, c, slide, position, blocks)) continue;
-    if (ra >= 0) addBlock(triplets_, ra, ra, blocks.aa);
-    if (rb >= 0) addBlock(triplets_, rb, rb, blocks.bb);
+    if (ra >= 0) addBlock(ra, ra, blocks.aa);
+    if (rb >= 0) addBlock(rb, rb, blocks.bb);
     if (ra >= 0 && rb >= 0) {
-      addBlock(triplets_, ra, rb, blocks.ab);
-      addBlock(triplets_, rb, ra, blocks.ba);
+      addBlock(ra, rb, blocks.ab);
+      addBlock(rb, ra, blocks.ba);
     }
   }
 }

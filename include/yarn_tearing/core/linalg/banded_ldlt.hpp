@@ -19,6 +19,15 @@ class BandedLdlt {
  public:
   /// Factorizes the n x n matrix of `entries`; false if a pivot is zero or not finite.
   bool factorize(const std::vector<Eigen::Triplet<double>>& entries, int n);
+  /// Starts assembling an n x n matrix of half bandwidth b in place: every entry zero.
+  void begin(int n, int half_bandwidth);
+  /// Adds `value` to entry (row, col) when it is in the lower triangle (row >= col, which must
+  /// then be within the band: row - col <= b); an upper one is its mirror and skipped.
+  void add(int row, int col, double value) {
+    if (row >= col) at(matrix_, row, col) += value;
+  }
+  /// Factorizes the matrix assembled since begin(); false if a pivot is zero or not finite.
+  bool factorize();
   /// Solves with the last factorization: result = A^-1 rhs.
   void solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& result) const;
   /// result = A x with the matrix of the last factorize() (kept beside the factor).

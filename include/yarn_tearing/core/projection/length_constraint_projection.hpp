@@ -106,6 +106,15 @@ class LengthConstraintProjection {
   /// fast iterations treat stably ((omega dt)^2 > 1). Then warm-starts the multipliers from the
   /// last projection's (rescaled by dt^2).
   bool newtonFirst(std::size_t num_edges);
+  /// A number that changes when an edge tears or a vertex becomes or stops being a support.
+  std::uint64_t piecesSignature(const EdgeSet& edges) const;
+  /// Moves the free vertices from the prediction by the last projection's correction
+  /// (last_correction_), where the pieces are the same as then.
+  void startFromLastCorrection(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
+  /// Keeps this projection's correction (position - predicted_) for the next one, or none after
+  /// a projection with contacts (whose impulses the next may not have).
+  void keepCorrection(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
+                      bool contact_free);
   /// Sets held_vertex_ (regrouping the pieces only when edges or supports changed).
   void updateHeldVertices(const EdgeSet& edges);
   /// (omega dt)^2 of every vertex's sideways mode [-] from the current multipliers.
@@ -192,6 +201,9 @@ class LengthConstraintProjection {
   std::vector<double> stretch_;             ///< a pass's stretch past the limit per edge [m]
   TautFrontier frontier_;                   ///< takes in runs of slack edges at once
   std::vector<Eigen::Vector3d> predicted_;  ///< positions before the projection [m]
+  /// Final minus predicted position of each vertex in the last contact-free projection [m].
+  std::vector<Eigen::Vector3d> last_correction_;
+  std::uint64_t correction_signature_ = 0;  ///< piecesSignature() when it was kept
   StiffNewtonStep newton_;                  ///< fallback when the fast iterations stall
   RestingContacts resting_;                 ///< the resting-contact fast path
   FastContactRows fast_rows_;               ///< few contact points in the fast iterations

@@ -131,7 +131,20 @@ class StiffNewtonStep {
   int numberRows(const std::vector<double>& inverse_mass, const EdgeSet& edges,
                  const EdgeIncidence& incidence, const std::vector<std::uint8_t>& taut,
                  const ContactSet* contacts);
-  /// Adds the free vertices' mass rows to triplets_ and rhs_.
+  /// Adds `value` to entry (row, col) of the system: into the dense band (dense_band_, the
+  /// lower triangle) or as a triplet (both triangles listed).
+  void addEntry(int row, int col, double value) {
+    if (dense_band_) {
+      dense_band_factorization_.add(row, col, value);
+    } else {
+      triplets_.emplace_back(row, col, value);
+    }
+  }
+  /// Adds a 3 x 3 block at (row, col) (addEntry).
+  void addBlock(int row, int col, const Eigen::Matrix3d& block);
+  /// The half bandwidth [rows] of a chain's system as numbered by numberRows().
+  int chainBandwidth(const EdgeSet& edges) const;
+  /// Adds the free vertices' mass rows to the system and rhs_.
   void addVertexRows(const std::vector<Eigen::Vector3d>& predicted,
                      const std::vector<double>& inverse_mass,
                      const std::vector<Eigen::Vector3d>& position);
@@ -199,7 +212,7 @@ class StiffNewtonStep {
   bool banded_ = false;
   /// Factorization for banded systems without contact rows (dense band storage, natural order).
   BandedLdlt dense_band_factorization_;
-  bool dense_band_ = false;  ///< the last symmetric solve used dense_band_factorization_
+  bool dense_band_ = false;  ///< the current system is assembled into dense_band_factorization_
   /// Factorization for banded systems with contact rows, kept so its storage is reused; copies
   /// start without one.
   struct SparseBandFactorization {
