@@ -76,34 +76,41 @@ bool PatternCachedLdlt::analyze(const std::vector<Eigen::Triplet<double>>& entri
   return placeEntries(entries);
 }
 
-bool PatternCachedLdlt::nonzerosFitAnalysed() const {
+PatternCachedLdlt::NonzeroFit PatternCachedLdlt::nonzerosFitAnalysed() const {
   if (nonzero_slot_.size() != static_cast<std::size_t>(upper_.nonZeros()) ||
       nonzero_.rows() != upper_.rows()) {
-    return false;
+    return NonzeroFit::kNew;
   }
   const double* values = upper_.valuePtr();
   Eigen::Index zeros = 0;
+  bool outside = false;
   for (std::size_t k = 0; k < nonzero_slot_.size(); ++k) {
     if (nonzero_slot_[k] < 0) {
-      if (values[k] != 0.0) return false;
+      outside = outside || values[k] != 0.0;
     } else if (values[k] == 0.0) {
       ++zeros;
     }
   }
-  return static_cast<double>(zeros) <= kMostZeroShare * static_cast<double>(nonzero_.nonZeros());
+  if (static_cast<double>(zeros) > kMostZeroShare * static_cast<double>(nonzero_.nonZeros())) {
+    return NonzeroFit::kNew;
+  }
+  return outside ? NonzeroFit::kGrow : NonzeroFit::kFits;
 }
 
-bool PatternCachedLdlt::analyzeNonzeros() {
+bool PatternCachedLdlt::analyzeNonzeros(bool grow) {
   ++zero_free_analyses_;
   const Eigen::Index size = upper_.rows();
   const int* outer = upper_.outerIndexPtr();
   const int* inner = upper_.innerIndexPtr();
   const double* values = upper_.valuePtr();
-  nonzero_slot_.assign(static_cast<std::size_t>(upper_.nonZeros()), -1);
+  // Grown, the pattern keeps what it held: entries that come and go (a slack edge that turns
+  // taut now and then) then stay in it instead of bringing an analysis each time they return.
+  if (!grow) nonzero_slot_.assign(static_cast<std::size_t>(upper_.nonZeros()), -1);
   int kept = 0;
   for (Eigen::Index j = 0; j < size; ++j) {
     for (int k = outer[j]; k < outer[j + 1]; ++k) {
-      if (values[k] != 0.0 || inner[k] == j) nonzero_slot_[k] = kept++;
+      const bool held = grow && nonzero_slot_[k] >= 0;
+      nonzero_slot_[k] = values[k] != 0.0 || inner[k] == j || held ? kept++ : -1;
     }
   }
   // Columns of upper_ are sorted, so are the kept entries: the arrays are filled directly.
@@ -124,7 +131,8 @@ bool PatternCachedLdlt::analyzeNonzeros() {
 
 bool PatternCachedLdlt::factorizeValues() {
   if (!leave_out_zeros_) return ldlt_.factorize(upper_);
-  if (!nonzerosFitAnalysed() && !analyzeNonzeros()) return false;
+  const NonzeroFit fit = nonzerosFitAnalysed();
+  if (fit != NonzeroFit::kFits && !analyzeNonzeros(fit == NonzeroFit::kGrow)) return false;
   const double* values = upper_.valuePtr();
   double* kept = nonzero_.valuePtr();
   for (std::size_t k = 0; k < nonzero_slot_.size(); ++k) {

@@ -23,12 +23,13 @@ namespace yarn_tearing {
 /// are left out of the factorization: the listed pattern still fixes the ordering and the
 /// slots, but the elimination runs on the pattern of the nonzero entries only, analysed with the
 /// same ordering (elimination tree and column counts, no new ordering) whenever a nonzero falls
-/// outside the last such analysis or the analysed pattern has grown past kMostZeroShare of
-/// unused entries. Leaving out exact zeros is the same matrix eliminated in the same order: the
-/// factor differs only in the order its round-off is summed. (A Newton system that keeps an idle
-/// row of stored zeros for every slack edge so that its pattern holds filled the factor of a
-/// 64 x 64 fabric to twice the nonzeros of the taut edges' own pattern.)
-/// Copies start without an analysis (Eigen's solvers cannot be copied).
+/// outside the last such analysis (the pattern then grows by it, keeping what it held) or the
+/// analysed pattern holds more than kMostZeroShare of unused entries (then it is analysed anew
+/// from the nonzeros alone). Leaving out exact zeros is the same matrix eliminated in the same
+/// order: the factor differs only in the order its round-off is summed. (A Newton system that keeps
+/// an idle row of stored zeros for every slack edge so that its pattern holds filled the factor of
+/// a 64 x 64 fabric to twice the nonzeros of the taut edges' own pattern.) Copies start without an
+/// analysis (Eigen's solvers cannot be copied).
 class PatternCachedLdlt {
  public:
   PatternCachedLdlt() = default;
@@ -79,11 +80,16 @@ class PatternCachedLdlt {
   /// Whether `entries` has the (row, column) sequence last placed.
   bool samePattern(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size) const;
 
-  /// Whether upper_'s nonzero values fall within nonzero_'s pattern, and that pattern has at
-  /// most kMostZeroShare of entries that are zero now.
-  bool nonzerosFitAnalysed() const;
-  /// Builds nonzero_ from upper_'s nonzero values and diagonal and analyses it.
-  bool analyzeNonzeros();
+  /// How upper_'s values fit nonzero_'s analysed pattern.
+  enum class NonzeroFit {
+    kFits,  ///< every nonzero value within it, at most kMostZeroShare of its entries zero now
+    kGrow,  ///< a nonzero value outside it, the share of zeros within bounds
+    kNew,   ///< more zeros than kMostZeroShare, or no analysis of this pattern
+  };
+  NonzeroFit nonzerosFitAnalysed() const;
+  /// Builds nonzero_ from upper_'s nonzero values and diagonal, with `grow` also from the
+  /// entries it held, and analyses it.
+  bool analyzeNonzeros(bool grow);
   /// Factorizes upper_, or with leaveOutZeros() its nonzero entries (nonzero_).
   bool factorizeValues();
 
