@@ -198,8 +198,8 @@ void LengthConstraintProjection::startFromLastCorrection(std::vector<Eigen::Vect
 }
 
 void LengthConstraintProjection::keepCorrection(const std::vector<Eigen::Vector3d>& position,
-                                                const EdgeSet& edges, bool contact_free) {
-  if (!contact_free) {
+                                                const EdgeSet& edges, bool keep) {
+  if (!keep) {
     last_correction_.clear();
     return;
   }
@@ -402,7 +402,8 @@ ProjectionResult LengthConstraintProjection::projectFast(
     measureIterate(position, edges, contacts, result);
   }
   endFastProjection(edges, loop, result.converged);
-  keepCorrection(position, edges, contacts == nullptr && fast_contacts_ == nullptr);
+  keepCorrection(position, edges,
+                 result.converged && contacts == nullptr && fast_contacts_ == nullptr);
   return result;
 }
 

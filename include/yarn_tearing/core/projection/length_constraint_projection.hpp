@@ -111,10 +111,10 @@ class LengthConstraintProjection {
   /// Moves the free vertices from the prediction by the last projection's correction
   /// (last_correction_), where the pieces are the same as then.
   void startFromLastCorrection(std::vector<Eigen::Vector3d>& position, const EdgeSet& edges);
-  /// Keeps this projection's correction (position - predicted_) for the next one, or none after
-  /// a projection with contacts (whose impulses the next may not have).
+  /// Keeps this projection's correction (position - predicted_) for the next one when `keep`
+  /// (a converged projection without contacts, whose impulses the next may not have), else none.
   void keepCorrection(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
-                      bool contact_free);
+                      bool keep);
   /// Sets held_vertex_ (regrouping the pieces only when edges or supports changed).
   void updateHeldVertices(const EdgeSet& edges);
   /// (omega dt)^2 of every vertex's sideways mode [-] from the current multipliers.
