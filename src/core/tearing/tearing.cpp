@@ -14,10 +14,23 @@ double overstrain(const Scene& scene, std::size_t e) {
   return edges.strain[e] / edges.breaking_strain[e];
 }
 
+/// c = sqrt(E / rho) of edge e's material [m/s]: how fast a tear's unloading runs through it.
+double waveSpeed(const Scene& scene, std::size_t e) {
+  const Material& material = scene.yarns[scene.edges.yarn[e]].material;
+  return std::sqrt(material.curve.youngsModulus() / material.density);
+}
+
 }  // namespace
 
-bool Tearing::unloading(const Scene& scene, std::size_t e, double time) const {
-  return !unloaded_at_.empty() && unloaded_at_[scene.edges.vertex_a[e]] > time;
+bool Tearing::waiting(const Scene& scene, std::size_t e, double time) const {
+  const std::uint32_t a = scene.edges.vertex_a[e];
+  if (unloaded_at_.empty() || !(unloaded_at_[a] > time)) return false;
+  // The straight distance is at most the way along the yarns, so an edge counts as reached no
+  // later than the wave reaches it.
+  const std::vector<Eigen::Vector3d>& x = scene.vertices.position;
+  const double distance = std::min((x[a] - tear_point_[a]).norm(),
+                                   (x[scene.edges.vertex_b[e]] - tear_point_[a]).norm());
+  return distance > wave_speed_[a] * (time - torn_at_[a]);
 }
 
 const std::vector<std::uint32_t>& Tearing::collect(const Scene& scene, double time) {
@@ -25,7 +38,7 @@ const std::vector<std::uint32_t>& Tearing::collect(const Scene& scene, double ti
   const EdgeSet& edges = scene.edges;
   bool any = false;
   for (std::size_t e = 0; e < edges.size() && !any; ++e) {
-    any = edges.intact(e) && overstrain(scene, e) >= 1.0 && !unloading(scene, e, time);
+    any = edges.intact(e) && overstrain(scene, e) >= 1.0 && !waiting(scene, e, time);
   }
   if (!any) return collected_;
 
@@ -34,7 +47,7 @@ const std::vector<std::uint32_t>& Tearing::collect(const Scene& scene, double ti
   best_of_piece_.assign(n, -1);
   best_ratio_.assign(n, 0.0);
   for (std::size_t e = 0; e < edges.size(); ++e) {
-    if (!edges.intact(e) || unloading(scene, e, time)) continue;
+    if (!edges.intact(e) || waiting(scene, e, time)) continue;
     const double ratio = overstrain(scene, e);
     const std::uint32_t root = pieces_.root(edges.vertex_a[e]);
     if (ratio >= 1.0 && ratio > best_ratio_[root]) {
@@ -68,8 +81,12 @@ Tearing Tearing::restrictedTo(const std::vector<std::uint32_t>& vertices) const 
   Tearing restricted;
   restricted.unloading_end_ = unloading_end_;
   if (unloaded_at_.empty()) return restricted;
-  restricted.unloaded_at_.reserve(vertices.size());
-  for (std::uint32_t v : vertices) restricted.unloaded_at_.push_back(unloaded_at_[v]);
+  for (std::uint32_t v : vertices) {
+    restricted.unloaded_at_.push_back(unloaded_at_[v]);
+    restricted.torn_at_.push_back(torn_at_[v]);
+    restricted.tear_point_.push_back(tear_point_[v]);
+    restricted.wave_speed_.push_back(wave_speed_[v]);
+  }
   return restricted;
 }
 
@@ -89,17 +106,26 @@ void Tearing::startUnloading(const Scene& scene, double time) {
     box_max_[root] = box_max_[root].cwiseMax(position[v]);
   }
   unloading_until_.assign(n, -1.0);
+  tear_of_piece_.assign(n, 0);
   for (std::uint32_t e : collected_) {
-    const Material& material = scene.yarns[edges.yarn[e]].material;
-    const double speed = std::sqrt(material.curve.youngsModulus() / material.density);
     const std::uint32_t root = pieces_.root(edges.vertex_a[e]);
+    const double speed = waveSpeed(scene, e);
     unloading_until_[root] = time + (box_max_[root] - box_min_[root]).norm() / speed;
     unloading_end_ = std::max(unloading_end_, unloading_until_[root]);
+    tear_of_piece_[root] = e;
   }
   unloaded_at_.resize(n, -1.0);
+  torn_at_.resize(n, -1.0);
+  tear_point_.resize(n, Eigen::Vector3d::Zero());
+  wave_speed_.resize(n, 0.0);
   for (std::size_t v = 0; v < n; ++v) {
-    const double until = unloading_until_[pieces_.root(static_cast<std::uint32_t>(v))];
-    if (until > 0.0) unloaded_at_[v] = until;
+    const std::uint32_t root = pieces_.root(static_cast<std::uint32_t>(v));
+    if (!(unloading_until_[root] > 0.0)) continue;
+    const std::uint32_t e = tear_of_piece_[root];
+    unloaded_at_[v] = unloading_until_[root];
+    torn_at_[v] = time;
+    tear_point_[v] = 0.5 * (position[edges.vertex_a[e]] + position[edges.vertex_b[e]]);
+    wave_speed_[v] = waveSpeed(scene, e);
   }
 }
 
