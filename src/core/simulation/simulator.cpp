@@ -210,6 +210,7 @@ void Simulator::advanceInSubsteps(bool recoil) {
     if (remaining < h + 0.5 * h) h = remaining;
     setSubstepTargets((elapsed + h) / time_step);
     parameters_.time_step = h;
+    work_.projection.forgetCorrection();
     if (!advance(coarse && h > fine + slack)) {
       coarse_failed = true;
       continue;
@@ -223,6 +224,7 @@ void Simulator::advanceInSubsteps(bool recoil) {
   }
   parameters_.time_step = time_step;
   vertices.kinematic_target = step_target_;
+  work_.projection.forgetCorrection();  // a substep's, rescaled to a whole step
   time_ = start_time + time_step;
   std::sort(whole.restored_yarns.begin(), whole.restored_yarns.end());
   whole.restored_yarns.erase(std::unique(whole.restored_yarns.begin(), whole.restored_yarns.end()),
