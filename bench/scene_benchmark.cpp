@@ -2,6 +2,8 @@
 // fabric_benchmark.cpp, each with its reference in the same run:
 //   BM_FabricHeldAtCorners/N vs BM_FabricAtRest/N: an N x N plain weave held at its two top
 //     corners, settled, against the same weave hanging from its whole first row.
+//   BM_FabricCornersDrawnApart/16 vs BM_FabricAtRest/16: the node's fabric_draw scene from its
+//     first tear on (the tearing and the torn patch flapping from its corners).
 //   BM_PatchObstacle/K: a 16 x 12 cotton patch hanging from its first row; K = 0 without an
 //     obstacle (the reference), 1 a 3 cm ball pressed 1 mm into its middle from the front (a
 //     solid placed through the patch is refused, deep_overlap_test.cpp).
@@ -12,6 +14,7 @@
 //        --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "bench_support.hpp"
@@ -56,6 +59,50 @@ void BM_FabricHeldAtCorners(benchmark::State& state) {
   Simulator sim(parameters, {}, {spec});
   settle(sim, 0.5);
   timeSteps(state, sim);
+}
+
+/// The scene of tools/measure_fabric_draw.py: a range(0) x range(0) cotton patch, 8 x 8 cm, 2 %
+/// crimp, pinned at its two top corners for 0.3 s, then the corners drawn apart along the weft at
+/// 2 cm/s each until the first tear; then each iteration steps that state kWindow times, 0.6 s
+/// (copying it is not timed): the tearing and the torn patch flapping from its corners. `per_step`
+/// is the mean step [s] over the window, `tears` the tears in it. Reference: BM_FabricAtRest/16.
+void BM_FabricCornersDrawnApart(benchmark::State& state) {
+  constexpr int kWindow = 600;
+  const int side = static_cast<int>(state.range(0));
+  FabricSpec spec = plainWeave(side, side, 0.08 / (side - 1));
+  spec.warp_crimp = 0.02;
+  spec.weft_crimp = 0.02;
+  spec.pinned = {{0, 0}, {0, -1}};
+  SimulationParameters parameters;
+  Simulator start(parameters, {}, {spec});
+  const std::uint32_t left = start.scene().fabricVertex(0, 0, 0);
+  const std::uint32_t right = start.scene().fabricVertex(0, 0, -1);
+  const Eigen::Vector3d left_start = start.scene().vertices.position[left];
+  const Eigen::Vector3d right_start = start.scene().vertices.position[right];
+  const auto drive = [&](Simulator& sim) {
+    const double travel = 0.02 * std::max(sim.time() + parameters.time_step - 0.3, 0.0);
+    if (travel > 0.0) {
+      sim.setKinematicTarget(left, left_start - Eigen::Vector3d(travel, 0.0, 0.0));
+      sim.setKinematicTarget(right, right_start + Eigen::Vector3d(travel, 0.0, 0.0));
+    }
+    sim.step();
+  };
+  while (!start.recoilPending() && start.time() < 3.0) drive(start);
+  Simulator sim = start;
+  std::size_t tears = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    sim = start;
+    state.ResumeTiming();
+    for (int i = 0; i < kWindow; ++i) drive(sim);
+    state.PauseTiming();
+    tears = sim.takeTearEvents().size();
+    state.ResumeTiming();
+  }
+  state.counters["per_step"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * kWindow,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["tears"] = static_cast<double>(tears);
 }
 
 /// The 16 x 12 patch (12.5 mm between yarns, pinned along its first row, air damping) settled for
@@ -128,6 +175,7 @@ void BM_DiagonalGrid(benchmark::State& state) {
 }
 
 BENCHMARK(BM_FabricHeldAtCorners)->Arg(32)->Arg(64)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_FabricCornersDrawnApart)->Arg(16)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_PatchObstacle)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_DiagonalGrid)->Args({8, 0})->Args({8, 1})->Unit(benchmark::kMicrosecond);
 

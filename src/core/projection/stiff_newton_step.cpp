@@ -330,6 +330,7 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
   pass_multiplier_.resize(edges.size());
   stretch_.resize(edges.size());
   frontier_.reset(edges.size());
+  leaves_.assign(edges.size(), 0);
   // Block principal pivoting, as in the fast iterations: release the taut edges that would
   // push, take in the slack ones that the step would stretch (with the taut frontier), solve
   // again. On a contact-free graph that is no chain, the first kQuickNewtonSteps solve once:
@@ -352,7 +353,8 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
     for (std::size_t e = 0; e < edges.size(); ++e) {
       if (!movable[e]) continue;
       if (taut[e]) {
-        if (pass_multiplier_[e] < 0.0 && frontier_.mayLeave(e)) {
+        if (pass_multiplier_[e] < 0.0 && frontier_.mayLeave(e) && leaves_[e] < kMostLeaves) {
+          ++leaves_[e];
           taut[e] = 0;
           frontier_.left(e);
           stretch_state.release(edges, e);
