@@ -59,22 +59,7 @@ void BM_FabricTearing(benchmark::State& state) {
     }
     sim.step();
   };
-  while (!start.recoilPending() && start.time() < 2.0) drive(start);
-  Simulator sim = start;
-  std::size_t tears = 0;
-  for (auto _ : state) {
-    state.PauseTiming();
-    sim = start;
-    state.ResumeTiming();
-    for (int i = 0; i < kWindow; ++i) drive(sim);
-    state.PauseTiming();
-    tears = sim.takeTearEvents().size();
-    state.ResumeTiming();
-  }
-  state.counters["per_step"] =
-      benchmark::Counter(static_cast<double>(state.iterations()) * kWindow,
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.counters["tears"] = static_cast<double>(tears);
+  timeWindowFromFirstTear(state, start, 2.0, kWindow, drive);
 }
 
 BENCHMARK(BM_FabricAtRest)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMicrosecond);

@@ -87,22 +87,7 @@ void BM_FabricCornersDrawnApart(benchmark::State& state) {
     }
     sim.step();
   };
-  while (!start.recoilPending() && start.time() < 3.0) drive(start);
-  Simulator sim = start;
-  std::size_t tears = 0;
-  for (auto _ : state) {
-    state.PauseTiming();
-    sim = start;
-    state.ResumeTiming();
-    for (int i = 0; i < kWindow; ++i) drive(sim);
-    state.PauseTiming();
-    tears = sim.takeTearEvents().size();
-    state.ResumeTiming();
-  }
-  state.counters["per_step"] =
-      benchmark::Counter(static_cast<double>(state.iterations()) * kWindow,
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.counters["tears"] = static_cast<double>(tears);
+  timeWindowFromFirstTear(state, start, 3.0, kWindow, drive);
 }
 
 /// The 16 x 12 patch (12.5 mm between yarns, pinned along its first row, air damping) settled for
