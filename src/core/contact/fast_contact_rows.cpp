@@ -143,7 +143,7 @@ void FastContactRows::solve(const EdgeSet& edges, EdgeGramSolver& gram, const Gr
       }
     }
     solved_[p] = column;
-    gram.resolve(system, solved_[p]);  // K_ee as factorized for m0
+    gram.resolve(edges, system, solved_[p]);  // K_ee as factorized for m0
   }
   for (std::size_t p = 0; p < k; ++p) {
     const Row& r = row_[active_rows_[p]];

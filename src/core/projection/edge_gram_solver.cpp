@@ -1,5 +1,9 @@
 #include "yarn_tearing/core/projection/edge_gram_solver.hpp"
 
+#include <Eigen/IterativeLinearSolvers>
+
+#include "yarn_tearing/core/projection/gram_operator.hpp"
+
 namespace yarn_tearing {
 namespace {
 
@@ -20,12 +24,12 @@ void EdgeGramSolver::setTopology(const EdgeSet& edges, std::size_t num_vertices)
     if (!consecutive || !increasing) is_chain_ = false;
   }
   incidence_.build(edges, num_vertices);
+  chains_.build(edges, incidence_);
   diagonal_.resize(edges.size());
   included_.resize(edges.size());
   upper_.resize(edges.size());
-  sweep_.resize(edges.size());
-  pivot_.resize(edges.size());
   gram_diagonal_.resize(edges.size());
+  last_solution_.clear();
 }
 
 void EdgeGramSolver::solve(const EdgeSet& edges, const GramSystem& system,
@@ -34,21 +38,60 @@ void EdgeGramSolver::solve(const EdgeSet& edges, const GramSystem& system,
   prepareRightHandSide(system, rhs);
   if (usesBandedPath()) {
     factorizeBanded(edges, system);
-    substituteBanded(rhs);
-  } else {
-    solveGeneral(edges, system, rhs);
+    banded_.solveInPlace(rhs.data());
+    return;
   }
+  last_iterative_ = !force_direct_ && system.regularization == 0.0 && system.anchor == nullptr &&
+                    included_.size() >= kIterativeEdges;
+  if (last_iterative_) {
+    preconditioner_.factorize(edges, chains_, *system.direction, *system.vertex_weight, included_,
+                              diagonal_);
+    last_iterative_ = solveIterative(edges, system, rhs, last_solution_);
+    if (last_iterative_) {
+      last_solution_ = rhs;
+      return;
+    }
+  }
+  solveGeneral(edges, system, rhs);
 }
 
-void EdgeGramSolver::resolve(const GramSystem& system, std::vector<double>& rhs) {
+void EdgeGramSolver::resolve(const EdgeSet& edges, const GramSystem& system,
+                             std::vector<double>& rhs) {
   prepareRightHandSide(system, rhs);
   if (usesBandedPath()) {
-    substituteBanded(rhs);
+    banded_.solveInPlace(rhs.data());
+    return;
+  }
+  if (last_iterative_ && solveIterative(edges, system, rhs, no_guess_)) return;
+  if (last_iterative_) {
+    solveGeneral(edges, system, rhs);  // factorizes the system for the resolves that follow
+    last_iterative_ = false;
     return;
   }
   Eigen::Map<Eigen::VectorXd> b(rhs.data(), static_cast<Eigen::Index>(included_.size()));
   const Eigen::VectorXd x = factorization_.solve(b);
   b = x;
+}
+
+bool EdgeGramSolver::solveIterative(const EdgeSet& edges, const GramSystem& system,
+                                    std::vector<double>& rhs, const std::vector<double>& guess) {
+  const auto q = static_cast<Eigen::Index>(included_.size());
+  const GramOperator matrix(edges, *system.direction, *system.vertex_weight, included_, diagonal_,
+                            gram_diagonal_);
+  Eigen::ConjugateGradient<GramOperator, Eigen::Lower | Eigen::Upper, EigenChainPreconditioner> cg;
+  cg.setTolerance(kIterativeTolerance);
+  cg.setMaxIterations(kMostIterations);
+  cg.preconditioner().use(preconditioner_);
+  cg.compute(matrix);
+  const Eigen::Map<const Eigen::VectorXd> b(rhs.data(), q);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(q);
+  if (static_cast<Eigen::Index>(guess.size()) == q) {
+    for (Eigen::Index e = 0; e < q; ++e) x[e] = included_[e] ? guess[e] : 0.0;
+  }
+  x = cg.solveWithGuess(b, x);
+  if (cg.info() != Eigen::Success || !x.allFinite()) return false;
+  Eigen::Map<Eigen::VectorXd>(rhs.data(), q) = x;
+  return true;
 }
 
 void EdgeGramSolver::assembleDiagonal(const EdgeSet& edges, const GramSystem& system) {
@@ -86,25 +129,7 @@ void EdgeGramSolver::factorizeBanded(const EdgeSet& edges, const GramSystem& sys
         e + 1 < q && included_[e] && included_[e + 1] && edges.vertex_b[e] == edges.vertex_a[e + 1];
     upper_[e] = coupled ? -w[edges.vertex_b[e]] * n[e].dot(n[e + 1]) : 0.0;
   }
-  // Thomas algorithm (the matrix is symmetric positive definite, no pivoting needed).
-  double previous_sweep = 0.0;
-  for (std::size_t e = 0; e < q; ++e) {
-    const double lower = e > 0 ? upper_[e - 1] : 0.0;
-    pivot_[e] = diagonal_[e] - lower * previous_sweep;
-    sweep_[e] = upper_[e] / pivot_[e];
-    previous_sweep = sweep_[e];
-  }
-}
-
-void EdgeGramSolver::substituteBanded(std::vector<double>& rhs) const {
-  const std::size_t q = pivot_.size();
-  double previous_rhs = 0.0;
-  for (std::size_t e = 0; e < q; ++e) {
-    const double lower = e > 0 ? upper_[e - 1] : 0.0;
-    rhs[e] = (rhs[e] - lower * previous_rhs) / pivot_[e];
-    previous_rhs = rhs[e];
-  }
-  for (std::size_t e = q; e-- > 1;) rhs[e - 1] -= sweep_[e - 1] * rhs[e];
+  banded_.factorize(diagonal_, upper_);
 }
 
 void EdgeGramSolver::solveGeneral(const EdgeSet& edges, const GramSystem& system,

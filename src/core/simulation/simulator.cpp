@@ -89,6 +89,7 @@ void Simulator::setParameters(const SimulationParameters& parameters) {
   parameters.validate();
   parameters_ = parameters;
   work_.gram.forceGeneralPath(parameters_.force_general_solver);
+  work_.gram.forceDirectSolves(parameters_.force_direct_solves);
 }
 
 void Simulator::reset() {
@@ -120,6 +121,7 @@ void Simulator::resetWorkspace() {
   }
   contact_wrench_.assign(obstacles_.size(), ContactWrench{});
   work_.gram.forceGeneralPath(parameters_.force_general_solver);
+  work_.gram.forceDirectSolves(parameters_.force_direct_solves);
 }
 
 void Simulator::step() {

@@ -74,6 +74,9 @@ struct SimulationParameters {
   bool local_recoil = true;
   /// Use the general sparse solver even for chains (the banded O(N) path is otherwise chosen).
   bool force_general_solver = false;
+  /// Solve the edge systems of graphs that are no chains by the sparse LDL^T only, never by
+  /// conjugate gradients (EdgeGramSolver; for comparing the two).
+  bool force_direct_solves = false;
 
   /// Throws std::invalid_argument naming the parameter and the allowed range.
   void validate() const;

@@ -1,0 +1,31 @@
+#include "yarn_tearing/core/projection/gram_operator.hpp"
+
+namespace yarn_tearing {
+
+void GramOperator::multiply(const Eigen::Ref<const Eigen::VectorXd>& x,
+                            Eigen::Ref<Eigen::VectorXd> y) const {
+  const EdgeSet& edges = *edges_;
+  const std::vector<Eigen::Vector3d>& n = *direction_;
+  const std::vector<double>& w = *weight_;
+  const std::vector<std::uint8_t>& included = *included_;
+  vertex_sum_.assign(w.size(), Eigen::Vector3d::Zero());
+  for (std::size_t e = 0; e < included.size(); ++e) {
+    if (!included[e]) continue;
+    const Eigen::Vector3d pull = x[static_cast<Eigen::Index>(e)] * n[e];
+    vertex_sum_[edges.vertex_a[e]] -= pull;
+    vertex_sum_[edges.vertex_b[e]] += pull;
+  }
+  for (std::size_t e = 0; e < included.size(); ++e) {
+    const auto i = static_cast<Eigen::Index>(e);
+    const double own = ((*diagonal_)[e] - (*gram_diagonal_)[e]) * x[i];
+    if (!included[e]) {
+      y[i] = own;
+      continue;
+    }
+    const std::uint32_t a = edges.vertex_a[e];
+    const std::uint32_t b = edges.vertex_b[e];
+    y[i] = n[e].dot(w[b] * vertex_sum_[b] - w[a] * vertex_sum_[a]) + own;
+  }
+}
+
+}  // namespace yarn_tearing
