@@ -102,7 +102,7 @@ class PatternCachedLdlt {
   static constexpr double kMostFillGrowth = 1.1;
   /// Share of the entries of the analysed nonzero pattern that may be zero before it is analysed
   /// anew (leaveOutZeros()) [-].
-  static constexpr double kMostZeroShare = 0.1;
+  static constexpr double kMostZeroShare = 0.3;
   bool leave_out_zeros_ = false;  ///< see leaveOutZeros()
   bool ordered_ = false;          ///< the last analysis computed its ordering
   bool reorder_next_ = true;      ///< the next analysis computes a new ordering
