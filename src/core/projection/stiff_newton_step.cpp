@@ -17,11 +17,23 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
   // wraps are factorized near the round-off that decides where a wrap tears, on the sparse
   // LDL^T in natural order.
   dense_band_ = banded_ && contacts == nullptr;
+  inverse_mass_ = &inverse_mass;
+  condensing_ = false;
+  if (!banded_ && contacts == nullptr && start_.direction != nullptr && !force_full_) {
+    chooseCondensation(edges, incidence, inverse_mass, rows);
+  } else {
+    last_eliminated_.clear();
+  }
   triplets_.clear();
   if (dense_band_) dense_band_factorization_.begin(rows, chainBandwidth(edges));
   rhs_.setZero(rows);
   addVertexRows(predicted, inverse_mass, position);
   if (!addEdgeRows(edges, stretch_state, position, multiplier)) return false;
+  if (condensing_) {
+    condensation_.addCouplings(
+        inverse_mass, edge_direction_,
+        [this](int row, int col, double value) { addEntry(row, col, value); });
+  }
   unsymmetric_ = false;
   if (contacts != nullptr) addContactRows(*contacts, inverse_mass, position);
   if (unsymmetric_) return solveUnsymmetric(rows);
@@ -75,6 +87,24 @@ int StiffNewtonStep::numberRows(const std::vector<double>& inverse_mass, const E
   return rows;
 }
 
+void StiffNewtonStep::chooseCondensation(const EdgeSet& edges, const EdgeIncidence& incidence,
+                                         const std::vector<double>& inverse_mass, int rows) {
+  system_row_.resize(edges.size());
+  plain_.resize(edges.size());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    system_row_[e] = edge_row_[e] >= 0 ? edge_row_[e] : idle_row_[e];
+    const bool plain_a = inverse_mass[edges.vertex_a[e]] == 0.0 || takesStartDirection(e, false);
+    const bool plain_b = inverse_mass[edges.vertex_b[e]] == 0.0 || takesStartDirection(e, true);
+    // By the ends' directions alone, taut or idle: the same vertices are eliminated, and the
+    // reduced system keeps its pattern, while the taut set changes.
+    plain_[e] = plain_a && plain_b;
+  }
+  const bool any =
+      condensation_.choose(edges, incidence, vertex_row_, system_row_, plain_, rows) > 0;
+  condensing_ = any && condensation_.eliminated() == last_eliminated_;
+  last_eliminated_ = condensation_.eliminated();
+}
+
 void StiffNewtonStep::addBlock(int row, int col, const Eigen::Matrix3d& block) {
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) addEntry(row + i, col + j, block(i, j));
@@ -114,6 +144,7 @@ void StiffNewtonStep::addVertexRows(const std::vector<Eigen::Vector3d>& predicte
 bool StiffNewtonStep::addEdgeRows(const EdgeSet& edges, const EdgeStretchState& stretch_state,
                                   const std::vector<Eigen::Vector3d>& position,
                                   const std::vector<double>& multiplier) {
+  edge_direction_.resize(edges.size());
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const bool idle = idle_row_[e] >= 0;
     if (!idle && edge_row_[e] < 0) continue;
@@ -128,12 +159,16 @@ bool StiffNewtonStep::addEdgeRows(const EdgeSet& edges, const EdgeStretchState& 
       const double length = d.norm();
       if (!(length > 0.0)) return false;
       dir = d / length;
-      // Geometric stiffness m_e Hess C_e = m_e (I - n n^T) / l on the (a, b) blocks.
-      g = (multiplier[e] / length) * (Eigen::Matrix3d::Identity() - dir * dir.transpose());
+      // Geometric stiffness m_e Hess C_e = m_e (I - n n^T) / l on the (a, b) blocks; none
+      // where both ends take their start directions (or are supports) in a condensed system.
+      if (!condensing_ || !plain_[e]) {
+        g = (multiplier[e] / length) * (Eigen::Matrix3d::Identity() - dir * dir.transpose());
+      }
       re = edge_row_[e];
       diagonal = -stretch_state.shift()[e];
       rhs_[re] = -(length - stretch_state.baseLength()[e]);
     }
+    edge_direction_[e] = dir;
     // A taut and an idle row list the same entries in the same order, so that the pattern
     // (PatternCachedLdlt) holds while the taut set changes.
     if (ra >= 0) addBlock(ra, ra, g);
@@ -185,8 +220,11 @@ bool StiffNewtonStep::solveSymmetric(int rows, const ContactSet* contacts) {
     if (sparse_band_factorization_.ldlt.info() != Eigen::Success) return false;
   } else {
     // The idle rows' stored zeros stay out of the elimination: they only keep the pattern.
-    general_factorization_.leaveOutZeros();
-    if (!general_factorization_.factorize(triplets_, rows, sameLayoutAsLast(contacts))) {
+    PatternCachedLdlt& factorization =
+        condensing_ ? condensed_factorization_ : general_factorization_;
+    factorization.leaveOutZeros();
+    const int size = condensing_ ? condensation_.reducedRows() : rows;
+    if (!factorization.factorize(triplets_, size, sameLayoutAsLast(contacts))) {
       return false;
     }
   }
@@ -222,6 +260,12 @@ bool StiffNewtonStep::sameLayoutAsLast(const ContactSet* contacts) {
   for (std::size_t e = 0; e < edge_row_.size(); ++e) {
     layout_.push_back(edge_row_[e] >= 0 ? edge_row_[e] : idle_row_[e]);
   }
+  if (condensing_) {  // never with contacts
+    for (std::uint8_t eliminated : condensation_.eliminated()) layout_.push_back(eliminated);
+    const bool same = layout_ == last_condensed_layout_;
+    last_condensed_layout_.swap(layout_);
+    return same;
+  }
   const bool same = contacts == nullptr && last_contact_free_ && layout_ == last_layout_;
   last_layout_.swap(layout_);
   last_contact_free_ = contacts == nullptr;
@@ -236,6 +280,12 @@ bool StiffNewtonStep::solveAssembled(const Eigen::VectorXd& rhs, Eigen::VectorXd
   if (banded_) {
     result = sparse_band_factorization_.ldlt.solve(rhs);
     return sparse_band_factorization_.ldlt.info() == Eigen::Success && result.allFinite();
+  }
+  if (condensing_) {
+    condensation_.condense(rhs, *inverse_mass_, edge_direction_, reduced_rhs_);
+    reduced_solution_ = condensed_factorization_.solve(reduced_rhs_);
+    condensation_.expand(rhs, reduced_solution_, *inverse_mass_, edge_direction_, result);
+    return result.allFinite();
   }
   result = general_factorization_.solve(rhs);
   return result.allFinite();

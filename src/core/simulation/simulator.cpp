@@ -90,6 +90,7 @@ void Simulator::setParameters(const SimulationParameters& parameters) {
   parameters_ = parameters;
   work_.gram.forceGeneralPath(parameters_.force_general_solver);
   work_.gram.forceDirectSolves(parameters_.force_direct_solves);
+  work_.projection.forceFullNewtonSystems(parameters_.force_full_newton_systems);
 }
 
 void Simulator::reset() {
@@ -122,6 +123,7 @@ void Simulator::resetWorkspace() {
   contact_wrench_.assign(obstacles_.size(), ContactWrench{});
   work_.gram.forceGeneralPath(parameters_.force_general_solver);
   work_.gram.forceDirectSolves(parameters_.force_direct_solves);
+  work_.projection.forceFullNewtonSystems(parameters_.force_full_newton_systems);
 }
 
 void Simulator::step() {

@@ -62,6 +62,8 @@ struct ProjectionResult {
 /// contact rows beside the edges' and settle both by the same pivoting.
 class LengthConstraintProjection {
  public:
+  /// Newton steps solve their whole systems (StiffNewtonStep::forceFullSystems).
+  void forceFullNewtonSystems(bool force) { newton_.forceFullSystems(force); }
   /// Projects `position` in place. `limits` gives each edge's compliance c [m/N] and largest
   /// stretch [m]; masses and supports come from `vertices`. With `step_start` [m], the
   /// positions at the start of the step, a vertex that is slow sideways ((omega dt)^2 <=

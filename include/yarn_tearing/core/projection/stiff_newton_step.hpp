@@ -15,6 +15,7 @@
 #include "yarn_tearing/core/model/edge_set.hpp"
 #include "yarn_tearing/core/projection/edge_stretch_state.hpp"
 #include "yarn_tearing/core/projection/taut_frontier.hpp"
+#include "yarn_tearing/core/projection/vertex_condensation.hpp"
 
 namespace yarn_tearing {
 
@@ -73,6 +74,8 @@ class StiffNewtonStep {
   /// the taut set: its step solved a linearized problem whose complementarity is not exact
   /// (a taut edge may push, a slack one be stretched), and a projection must not end on it.
   bool stoppedEarly() const { return stopped_early_; }
+  /// Never eliminates vertices from the system (VertexCondensation), for comparing the two.
+  void forceFullSystems(bool force) { force_full_ = force; }
   /// From now on in this projection, every Newton step pivots until its taut set holds.
   void pivotFully() { full_pivoting_ = true; }
   /// From now on in this projection, each Newton step's solve takes one pass of iterative
@@ -136,6 +139,10 @@ class StiffNewtonStep {
   void addEntry(int row, int col, double value) {
     if (dense_band_) {
       dense_band_factorization_.add(row, col, value);
+    } else if (condensing_) {
+      const int r = condensation_.reducedRow(row);
+      const int c = condensation_.reducedRow(col);
+      if (r >= 0 && c >= 0) triplets_.emplace_back(r, c, value);
     } else {
       triplets_.emplace_back(row, col, value);
     }
@@ -153,6 +160,11 @@ class StiffNewtonStep {
   bool addEdgeRows(const EdgeSet& edges, const EdgeStretchState& stretch_state,
                    const std::vector<Eigen::Vector3d>& position,
                    const std::vector<double>& multiplier);
+  /// Chooses the vertices to eliminate (condensation_, condensing_) on a contact-free graph that
+  /// is no chain, where ends take start directions: an edge has no geometric stiffness where
+  /// each end is a support or takes its start direction.
+  void chooseCondensation(const EdgeSet& edges, const EdgeIncidence& incidence,
+                          const std::vector<double>& inverse_mass, int rows);
   /// matrix_ from triplets_.
   void assembleMatrix(int rows);
   /// Solves the system with sliding friction columns (LU) into solution_.
@@ -242,6 +254,9 @@ class StiffNewtonStep {
   bool unsymmetric_ = false;  ///< the assembled system has sliding friction columns
   /// Factorization for other graphs, its symbolic analysis kept while the pattern holds.
   PatternCachedLdlt general_factorization_;
+  /// The same for condensed systems: a condensed and a full system keep their analyses side by
+  /// side.
+  PatternCachedLdlt condensed_factorization_;
   double impulse_change_ = 0.0;  ///< see impulseChange()
   bool refine_ = false;          ///< see refineSolves()
   int newton_steps_ = 0;         ///< Newton steps since beginProjection() [-]
@@ -250,12 +265,28 @@ class StiffNewtonStep {
   /// a point sticking in one and sliding in the next) [-].
   static constexpr int kStickingNewtonSteps = 10;
   std::vector<Eigen::Vector3d> previous_impulse_;  ///< per contact, before the solve [kg m]
-  std::vector<int> vertex_row_;   ///< first row of each free vertex, -1 for supports
-  std::vector<int> edge_row_;     ///< row of each taut edge, -1 otherwise
-  std::vector<int> idle_row_;     ///< row of each slack movable edge (not banded), -1 otherwise
+  std::vector<int> vertex_row_;  ///< first row of each free vertex, -1 for supports
+  std::vector<int> edge_row_;    ///< row of each taut edge, -1 otherwise
+  std::vector<int> idle_row_;    ///< row of each slack movable edge (not banded), -1 otherwise
+  /// Eliminates the vertices no edge stiffens from the general path's system (solveAssembled
+  /// then condenses and expands); a held fabric's Newton system shrinks to about one row an edge.
+  VertexCondensation condensation_;
+  /// This solve's system is condensed: only when the last solve would have eliminated the same
+  /// vertices, so that a scene whose slow vertices change from step to step keeps the full
+  /// system's analysis rather than analysing a new reduced one in every step.
+  bool condensing_ = false;
+  bool force_full_ = false;                      ///< see forceFullSystems()
+  std::vector<std::uint8_t> last_eliminated_;    ///< the vertices the last solve would eliminate
+  std::vector<int> system_row_;                  ///< per edge: its taut or idle row, else -1
+  std::vector<std::uint8_t> plain_;              ///< per edge: no geometric stiffness (condensing)
+  std::vector<Eigen::Vector3d> edge_direction_;  ///< per edge: n_e in this system, 0 if idle
+  const std::vector<double>* inverse_mass_ = nullptr;  ///< this solve's w_v [1/kg]
+  Eigen::VectorXd reduced_rhs_;                        ///< a right-hand side condensed
+  Eigen::VectorXd reduced_solution_;                   ///< its solution
   std::vector<int> layout_;       ///< this solve's vertex rows, then each edge's (sameLayoutAsLast)
   std::vector<int> last_layout_;  ///< the last general-path solve's
-  bool last_contact_free_ = false;  ///< the last general-path solve had no contacts
+  std::vector<int> last_condensed_layout_;  ///< the last condensed solve's
+  bool last_contact_free_ = false;          ///< the last general-path solve had no contacts
   const std::vector<std::uint8_t>* movable_ = nullptr;  ///< the movable edges of this apply
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> matrix_;

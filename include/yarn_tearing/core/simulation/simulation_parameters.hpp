@@ -77,6 +77,9 @@ struct SimulationParameters {
   /// Solve the edge systems of graphs that are no chains by the sparse LDL^T only, never by
   /// conjugate gradients (EdgeGramSolver; for comparing the two).
   bool force_direct_solves = false;
+  /// Newton steps solve the whole system, never eliminating the vertices no edge stiffens
+  /// (StiffNewtonStep; for comparing the two).
+  bool force_full_newton_systems = false;
 
   /// Throws std::invalid_argument naming the parameter and the allowed range.
   void validate() const;
