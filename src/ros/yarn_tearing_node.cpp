@@ -135,11 +135,7 @@ void YarnTearingNode::run() {
     mark = recordStage(LoopStage::kCallbacks, mark);
     stepCycle();
     mark = wallSeconds();
-    if (!config_.node.publishesInSimulatedTime() && (resent_ || publish_schedule_.due(mark))) {
-      if (resent_) {  // a step re-sent the last states: the new one at once, a period on from it
-        publish_schedule_.restartAfterPeriod(mark);
-        resent_ = false;
-      }
+    if (!config_.node.publishesInSimulatedTime() && publish_schedule_.due(mark)) {
       publishState();
       mark = recordStage(LoopStage::kPublishing, mark);
     }
@@ -284,8 +280,12 @@ void YarnTearingNode::onStepWatch() {
     return;  // between steps run() publishes and reports itself
   }
   const double now = wallSeconds();
+  // Only once the step has run a whole period: the deadline that fell in its first period is left
+  // to run(), which publishes the new state right after the step, so no deadline goes twice.
+  const bool long_step = now - step_started_ >= 1.0 / config_.node.publish_rate;
   const bool resendable = last_states_ || last_fabric_states_;
-  if (resendable && !config_.node.publishesInSimulatedTime() && publish_schedule_.due(now)) {
+  if (resendable && long_step && !config_.node.publishesInSimulatedTime() &&
+      publish_schedule_.due(now)) {
     // The state as of the last step, as while paused: stamp and sim_time unchanged.
     if (last_states_ && states_pub_.getNumSubscribers() > 0) {
       states_pub_.publish(last_states_);
@@ -293,7 +293,6 @@ void YarnTearingNode::onStepWatch() {
     if (last_fabric_states_ && fabric_states_pub_.getNumSubscribers() > 0) {
       fabric_states_pub_.publish(last_fabric_states_);
     }
-    resent_ = true;
   }
   diagnostics_.update(now, pacingStatus());
 }

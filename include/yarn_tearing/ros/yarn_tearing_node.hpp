@@ -176,7 +176,6 @@ class YarnTearingNode {
   /// The last states published (re-sent while a step runs); empty until someone subscribed.
   YarnStateArray::ConstPtr last_states_;
   FabricStateArray::ConstPtr last_fabric_states_;
-  bool resent_ = false;  ///< they were re-sent during the last step: publish anew after it
   ros::ServiceServer reset_srv_;
   ros::ServiceServer pause_srv_;
   ros::ServiceServer break_log_srv_;  ///< ~get_break_events
