@@ -77,18 +77,6 @@ class Frames:
             time.sleep(0.02)
 
 
-def state_is_finite(states):
-    for fabric in states.fabrics:
-        for p in list(fabric.positions) + list(fabric.velocities) + list(fabric.support_forces):
-            if not all(math.isfinite(c) for c in (p.x, p.y, p.z)):
-                return False
-        for values in (fabric.rest_lengths, fabric.tensions, fabric.stresses, fabric.strains,
-                       fabric.plastic_strains):
-            if not all(math.isfinite(x) for x in values):
-                return False
-    return True
-
-
 class HostileFabricTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -148,7 +136,8 @@ class HostileFabricTest(unittest.TestCase):
                                     "%s: fabric_states at %.2f Hz, expected %.1f" %
                                     (what, rate, expected))
         for _, states in records:
-            self.assertTrue(state_is_finite(states), "%s: NaN or inf in fabric_states" % what)
+            self.assertTrue(support.fabric_state_is_finite(states),
+                            "%s: NaN or inf in fabric_states" % what)
         self.assertGreater(records[-1][1].sim_time, records[0][1].sim_time,
                            "%s: simulated time stood still" % what)
 
