@@ -118,7 +118,12 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
       config_.node.real_time_factor == 0.0 ? " (as fast as possible)" : "");
 }
 
-YarnTearingNode::~YarnTearingNode() { services_.stop(); }
+YarnTearingNode::~YarnTearingNode() {
+  if (loop_lock_.owns_lock()) {
+    loop_lock_.unlock();  // run() threw: a service callback may be waiting for the mutex
+  }
+  services_.stop();
+}
 
 void YarnTearingNode::run() {
   // A NodeHandle's queue is the global one unless the nodelet set its own (a ros::CallbackQueue).
