@@ -131,6 +131,7 @@ void YarnTearingNode::run() {
   loop_lock_.lock();
   restartPacing();
   restartPublishSchedule();
+  keepStatesToResend();  // a long first step re-sends the initial state
   loop_lock_.unlock();
   services_.start();
   while (ros::ok() && !stop_requested_) {
@@ -344,6 +345,9 @@ void YarnTearingNode::publishBreakEvents() {
 
 void YarnTearingNode::publishState() {
   const ros::Time stamp = stampOf(simulator_.time());
+  // What is not built now is not re-sent later: it would be older than what follows it.
+  last_states_.reset();
+  last_fabric_states_.reset();
   if (states_pub_.getNumSubscribers() > 0) {
     last_states_ = boost::make_shared<const YarnStateArray>(
         toYarnStateArray(simulator_, config_.node.frame_id, stamp));
@@ -359,6 +363,16 @@ void YarnTearingNode::publishState() {
   }
   wrenches_.publish(simulator_, inputs_.graspFrames(), stamp);
   publishObstacleWrenches(stamp);
+}
+
+void YarnTearingNode::keepStatesToResend() {
+  const ros::Time stamp = stampOf(simulator_.time());
+  last_states_ = boost::make_shared<const YarnStateArray>(
+      toYarnStateArray(simulator_, config_.node.frame_id, stamp));
+  if (fabric_states_pub_) {
+    last_fabric_states_ = boost::make_shared<const FabricStateArray>(
+        toFabricStateArray(simulator_, config_.node.frame_id, stamp));
+  }
 }
 
 visualization_msgs::MarkerArray YarnTearingNode::buildMarkers(const ros::Time& stamp) {
@@ -534,6 +548,7 @@ void YarnTearingNode::resetNow() {
   markers_.clearBreaks();
   break_log_.clear();
   restartPacing();
+  keepStatesToResend();  // never re-send a state from before the reset
   // A reset never publishes at once: however many resets come, states keep publish_rate (in wall
   // time the schedule simply goes on; in simulated time it starts one period after time 0).
   if (config_.node.publishesInSimulatedTime()) {

@@ -2,7 +2,7 @@
 """While one step runs for seconds (a 128 x 96 patch started against a ball,
 test/ros/config/fabric_pressing_ball.yaml), the node's services answer, /diagnostics goes on
 saying how long the step has run, and fabric_states are re-sent at their rate with the last
-state's sim_time. A ~reset asked during the step is applied when it ends: ~get_break_events
+state's sim_time (the initial state during the first step). A ~reset asked during the step is applied when it ends: ~get_break_events
 answers as after the reset at once, and the next states start again from simulated time 0."""
 import threading
 import time
@@ -66,11 +66,14 @@ class LongStepServicesTest(unittest.TestCase):
             answer, took = timed_call(rospy.ServiceProxy(NODE + "/set_paused", SetBool), paused)
             self.assertTrue(answer.success)
             self.assertLess(took, ANSWER_WITHIN, "set_paused took %.2f s" % took)
+        reset_called = time.monotonic()
         _, took = timed_call(rospy.ServiceProxy(NODE + "/reset", Empty))
         self.assertLess(took, ANSWER_WITHIN, "reset took %.2f s" % took)
         events, took = timed_call(rospy.ServiceProxy(NODE + "/get_break_events", GetBreakEvents), 0)
         self.assertEqual((events.total, len(events.events)), (0, 0))
         self.assertLess(took, ANSWER_WITHIN, "get_break_events took %.2f s" % took)
+        initial = [m for t, m in states.records() if t < reset_called and m.sim_time == 0.0]
+        self.assertGreaterEqual(len(initial), 2, "the initial state was not re-sent")
 
         # The reset comes when the step ends; the patch starts against the ball again and its
         # steps are as long: the states published between them are re-sent during them.

@@ -122,6 +122,9 @@ class YarnTearingNode {
   bool stepOnce(double fraction);
   void publishBreakEvents();
   void publishState();
+  /// Builds the states to re-send during a long step from the simulator as it is now (at start
+  /// and after a reset; otherwise publishState() keeps what it published, and only that).
+  void keepStatesToResend();
   /// The force [N] the yarns exerted on each obstacle in the last step and its torque [N m] about
   /// frame_id's origin, in frame_id, on ~obstacles/<name>/wrench (only when subscribed).
   void publishObstacleWrenches(const ros::Time& stamp);
@@ -173,7 +176,7 @@ class YarnTearingNode {
   std::optional<bool> pause_pending_;  ///< ~set_paused came during the step under way
   ServiceThread services_;             ///< ~reset, ~set_paused, ~get_break_events, diagnostics
   ros::WallTimer step_watch_timer_;    ///< on services_
-  /// The last states published (re-sent while a step runs); empty until someone subscribed.
+  /// The last states published or kept (re-sent while a step runs).
   YarnStateArray::ConstPtr last_states_;
   FabricStateArray::ConstPtr last_fabric_states_;
   ros::ServiceServer reset_srv_;
