@@ -1,7 +1,13 @@
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
 #include "test_support.hpp"
 #include "yarn_tearing/core/model/fabric_spec.hpp"
+#include "yarn_tearing/core/simulation/simulator.hpp"
 
 namespace yarn_tearing::test {
 
@@ -39,6 +45,36 @@ inline std::vector<Eigen::Vector3d> positionsOf(const Scene& scene,
 /// The breaking force sigma_b pi r^2 of a fabric family's yarn [N].
 inline double breakingForce(const YarnSpec& yarn) {
   return yarn.material.curve.breakingStress() * yarn.area();
+}
+
+/// Steps `a` and `b` `steps` times side by side, each step converged, and expects them to end in
+/// the same state: positions within `position_tolerance` [m], tensions within
+/// `tension_tolerance` of the largest [-] (two ways of solving the same step).
+inline void expectSameSteps(Simulator& a, Simulator& b, int steps, double position_tolerance,
+                            double tension_tolerance) {
+  for (int k = 0; k < steps; ++k) {
+    a.step();
+    b.step();
+    ASSERT_TRUE(a.lastHealth().projection_converged) << "step " << k;
+    ASSERT_TRUE(b.lastHealth().projection_converged) << "step " << k;
+  }
+  const Scene& sa = a.scene();
+  const Scene& sb = b.scene();
+  double position_difference = 0.0;
+  for (std::size_t v = 0; v < sa.vertices.size(); ++v) {
+    position_difference =
+        std::max(position_difference, (sa.vertices.position[v] - sb.vertices.position[v]).norm());
+  }
+  double tension_difference = 0.0;
+  double largest_tension = 0.0;
+  for (std::size_t e = 0; e < sa.edges.size(); ++e) {
+    tension_difference =
+        std::max(tension_difference, std::abs(sa.edges.tension[e] - sb.edges.tension[e]));
+    largest_tension = std::max(largest_tension, std::abs(sb.edges.tension[e]));
+  }
+  EXPECT_LT(position_difference, position_tolerance);
+  ASSERT_GT(largest_tension, 0.0);
+  EXPECT_LT(tension_difference, tension_tolerance * largest_tension);
 }
 
 }  // namespace yarn_tearing::test
