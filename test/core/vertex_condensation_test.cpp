@@ -3,7 +3,6 @@
 // with whole systems.
 #include <gtest/gtest.h>
 
-
 #include "fabric_support.hpp"
 #include "yarn_tearing/core/simulation/simulator.hpp"
 
