@@ -62,7 +62,7 @@ void EdgeGramSolver::resolve(const EdgeSet& edges, const GramSystem& system,
     banded_.solveInPlace(rhs.data());
     return;
   }
-  if (last_iterative_ && solveIterative(edges, system, rhs, no_guess_)) return;
+  if (last_iterative_ && solveIterative(edges, system, rhs, {})) return;
   if (last_iterative_) {
     solveGeneral(edges, system, rhs);  // factorizes the system for the resolves that follow
     last_iterative_ = false;

@@ -15,8 +15,6 @@ class TridiagonalLdlt {
   void factorize(const std::vector<double>& diagonal, const std::vector<double>& upper);
   /// Solves in place: `x` holds b on entry and the solution on exit (the factorized size).
   void solveInPlace(double* x) const;
-  /// Rows of the last factorization [-].
-  std::size_t size() const { return pivot_.size(); }
 
  private:
   std::vector<double> lower_;  ///< u_{i-1}, the coupling to the row above (0 for row 0)

@@ -34,9 +34,8 @@ struct GramSystem {
 /// projection are solved by conjugate gradients (Eigen's ConjugateGradient on the matrix-free
 /// GramOperator) preconditioned by the yarns' own blocks (ChainPreconditioner), started from the
 /// last solution, to a relative residual of kIterativeTolerance, from kIterativeEdges edges on
-/// (a 64 x 64 fabric: 8,064); where that does not converge
-/// within kMostIterations, and for regularized systems (the least-squares tension), a sparse
-/// LDL^T.
+/// (a 64 x 64 fabric: 8,064); where that does not converge within kMostIterations, and for
+/// regularized systems (the least-squares tension), a sparse LDL^T.
 class EdgeGramSolver {
  public:
   /// Learns the edge graph; call whenever edges are added (breaking does not change it).
@@ -92,7 +91,6 @@ class EdgeGramSolver {
   EdgeChains chains_;
   ChainPreconditioner preconditioner_;
   std::vector<double> last_solution_;   ///< conjugate gradients' last solution (their next start)
-  std::vector<double> no_guess_;        ///< an empty start: from 0
   std::vector<double> diagonal_;        ///< assembled diagonal (1 for left-out edges)
   std::vector<std::uint8_t> included_;  ///< active edges with a movable vertex
   std::vector<double> upper_;           ///< banded: G_e,e+1

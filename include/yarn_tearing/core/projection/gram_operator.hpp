@@ -60,6 +60,13 @@ class GramOperator : public Eigen::EigenBase<GramOperator> {
 
   /// y = A x (`y` of the operator's size).
   void multiply(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> y) const;
+  /// A x into a vector the operator keeps (valid until its next product): Eigen's solvers take a
+  /// product every iteration, which then allocates nothing.
+  const Eigen::VectorXd& product(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+    product_.resize(rows());
+    multiply(x, product_);
+    return product_;
+  }
 
  private:
   const EdgeSet* edges_;
@@ -70,6 +77,7 @@ class GramOperator : public Eigen::EigenBase<GramOperator> {
   const std::vector<double>* gram_diagonal_;
   /// Per vertex: sum_f g_fv x_f of the last product (scratch; copies share nothing of use).
   mutable std::vector<Eigen::Vector3d> vertex_sum_;
+  mutable Eigen::VectorXd product_;  ///< the last product() [-]
 };
 
 }  // namespace yarn_tearing
@@ -84,9 +92,7 @@ struct generic_product_impl<yarn_tearing::GramOperator, Rhs, SparseShape, DenseS
   template <typename Dest>
   static void scaleAndAddTo(Dest& dst, const yarn_tearing::GramOperator& lhs, const Rhs& rhs,
                             const double& alpha) {
-    Eigen::VectorXd product(lhs.rows());
-    lhs.multiply(rhs, product);
-    dst += alpha * product;
+    dst += alpha * lhs.product(rhs);
   }
 };
 }  // namespace internal
