@@ -1,6 +1,7 @@
 // PatternCachedLdlt leaving stored zeros out of the factorization (leaveOutZeros()): the same
 // solution as with them, a factor without their fill, and a new analysis only when a nonzero
-// falls outside the analysed one.
+// falls outside the analysed one; entries added straight into the analysed pattern factorize as
+// the same entries listed.
 #include "yarn_tearing/core/linalg/pattern_cached_ldlt.hpp"
 
 #include <gtest/gtest.h>
@@ -90,6 +91,36 @@ TEST(PatternCachedLdlt, AnalysesTheNonzerosAnewOnlyWhenTheyOutgrowThem) {
   EXPECT_EQ(ldlt.analyses(), 1);
   expected = denseSolve(ringSystem(kVertices, more), kSize, rhs);
   EXPECT_LT((ldlt.solve(rhs) - expected).norm(), 1e-12 * expected.norm());
+}
+
+TEST(PatternCachedLdlt, EntriesAddedDirectlyFactorizeAsListedOnes) {
+  constexpr int kVertices = 30;
+  constexpr int kSize = 2 * kVertices;
+  std::vector<bool> idle(kVertices, false);
+  PatternCachedLdlt factorization;
+  factorization.leaveOutZeros();
+  EXPECT_FALSE(factorization.beginDirect(kSize));  // nothing analysed yet
+  ASSERT_TRUE(factorization.factorize(ringSystem(kVertices, idle), kSize));
+  // Another taut set lists the same sequence: added directly, no new analysis.
+  idle[4] = true;
+  idle[17] = true;
+  const std::vector<Eigen::Triplet<double>> entries = ringSystem(kVertices, idle);
+  ASSERT_TRUE(factorization.beginDirect(kSize));
+  for (const Eigen::Triplet<double>& t : entries) {
+    ASSERT_TRUE(factorization.addDirect(t.row(), t.col(), t.value()));
+  }
+  ASSERT_TRUE(factorization.factorizeDirect());
+  EXPECT_EQ(factorization.analyses(), 1);
+  const Eigen::VectorXd rhs = Eigen::VectorXd::LinSpaced(kSize, -1.0, 2.0);
+  const Eigen::VectorXd expected = denseSolve(entries, kSize, rhs);
+  EXPECT_LT((factorization.solve(rhs) - expected).norm(), 1e-12 * expected.norm());
+  // A sequence that departs from the last one is refused, as is one cut short.
+  ASSERT_TRUE(factorization.beginDirect(kSize));
+  EXPECT_FALSE(factorization.addDirect(entries[1].row(), entries[1].col(), 1.0));
+  ASSERT_TRUE(factorization.beginDirect(kSize));
+  EXPECT_TRUE(factorization.addDirect(entries[0].row(), entries[0].col(), entries[0].value()));
+  EXPECT_FALSE(factorization.factorizeDirect());
+  EXPECT_FALSE(factorization.beginDirect(kSize + 1));  // another size
 }
 
 }  // namespace

@@ -154,9 +154,9 @@ void PatternCachedLdlt::watchFill(bool analysed) {
 }
 
 bool PatternCachedLdlt::factorize(const std::vector<Eigen::Triplet<double>>& entries,
-                                  Eigen::Index size, bool same_as_last) {
-  const bool placed = new_index_.size() == size && entry_row_.size() == entries.size();
-  const bool analysed = !(same_as_last && placed) && !samePattern(entries, size);
+                                  Eigen::Index size) {
+  direct_values_ = nullptr;
+  const bool analysed = !samePattern(entries, size);
   if (analysed && !analyze(entries, size)) {
     entry_row_.clear();
     entry_col_.clear();
@@ -170,6 +170,21 @@ bool PatternCachedLdlt::factorize(const std::vector<Eigen::Triplet<double>>& ent
   if (!factorizeValues()) return false;
   watchFill(analysed);
   return true;
+}
+
+bool PatternCachedLdlt::beginDirect(Eigen::Index size) {
+  direct_values_ = nullptr;
+  if (new_index_.size() != size || entry_row_.empty()) return false;
+  cursor_ = 0;
+  direct_values_ = upper_.valuePtr();
+  std::fill(direct_values_, direct_values_ + upper_.nonZeros(), 0.0);
+  return true;
+}
+
+bool PatternCachedLdlt::factorizeDirect() {
+  const bool complete = direct_values_ != nullptr && cursor_ == entry_row_.size();
+  direct_values_ = nullptr;
+  return complete && factorizeValues();
 }
 
 }  // namespace yarn_tearing

@@ -137,20 +137,34 @@ void EdgeGramSolver::solveGeneral(const EdgeSet& edges, const GramSystem& system
   const std::vector<double>& w = *system.vertex_weight;
   const std::vector<Eigen::Vector3d>& n = *system.direction;
   const std::size_t q = edges.size();
-  triplets_.clear();
-  for (std::size_t e = 0; e < q; ++e) {
-    triplets_.emplace_back(e, e, diagonal_[e]);
-    if (!included_[e]) continue;
-    for (std::uint32_t v : {edges.vertex_a[e], edges.vertex_b[e]}) {
-      if (w[v] == 0.0) continue;
-      for (const std::uint32_t* it = incidence_.begin(v); it != incidence_.end(v); ++it) {
-        const std::uint32_t f = *it;
-        if (f == e || !included_[f]) continue;
-        triplets_.emplace_back(e, f, w[v] * roleSign(edges, e, f, v) * n[e].dot(n[f]));
+  const auto list = [&](const auto& add) {
+    for (std::size_t e = 0; e < q; ++e) {
+      add(static_cast<int>(e), static_cast<int>(e), diagonal_[e]);
+      if (!included_[e]) continue;
+      for (std::uint32_t v : {edges.vertex_a[e], edges.vertex_b[e]}) {
+        if (w[v] == 0.0) continue;
+        for (const std::uint32_t* it = incidence_.begin(v); it != incidence_.end(v); ++it) {
+          const std::uint32_t f = *it;
+          if (f == e || !included_[f]) continue;
+          add(static_cast<int>(e), static_cast<int>(f),
+              w[v] * roleSign(edges, e, f, v) * n[e].dot(n[f]));
+        }
       }
     }
+  };
+  // Straight into the analysed pattern while the included edges list the same entries.
+  const Eigen::Index size = static_cast<Eigen::Index>(q);
+  bool listed = factorization_.beginDirect(size);
+  if (listed) {
+    list([&](int row, int col, double value) {
+      listed = listed && factorization_.addDirect(row, col, value);
+    });
   }
-  factorization_.factorize(triplets_, static_cast<Eigen::Index>(q));
+  if (!listed || !factorization_.factorizeDirect()) {
+    triplets_.clear();
+    list([&](int row, int col, double value) { triplets_.emplace_back(row, col, value); });
+    factorization_.factorize(triplets_, size);
+  }
   Eigen::Map<Eigen::VectorXd> b(rhs.data(), static_cast<Eigen::Index>(q));
   const Eigen::VectorXd x = factorization_.solve(b);
   b = x;

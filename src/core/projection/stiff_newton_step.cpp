@@ -24,20 +24,34 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
   } else {
     last_eliminated_.clear();
   }
-  triplets_.clear();
-  if (dense_band_) dense_band_factorization_.begin(rows, chainBandwidth(edges));
-  rhs_.setZero(rows);
-  addVertexRows(predicted, inverse_mass, position);
-  if (!addEdgeRows(edges, stretch_state, position, multiplier)) return false;
-  if (condensing_) {
-    condensation_.addCouplings(
-        inverse_mass, edge_direction_,
-        [this](int row, int col, double value) { addEntry(row, col, value); });
+  const auto assemble = [&]() {
+    triplets_.clear();
+    if (dense_band_) dense_band_factorization_.begin(rows, chainBandwidth(edges));
+    rhs_.setZero(rows);
+    addVertexRows(predicted, inverse_mass, position);
+    if (!addEdgeRows(edges, stretch_state, position, multiplier)) return false;
+    if (condensing_) {
+      condensation_.addCouplings(
+          inverse_mass, edge_direction_,
+          [this](int row, int col, double value) { addEntry(row, col, value); });
+    }
+    unsymmetric_ = false;
+    if (contacts != nullptr) addContactRows(*contacts, inverse_mass, position);
+    return true;
+  };
+  // Straight into the last analysed pattern where the entries list as in the last solve (a
+  // fabric's rows, taut or idle, list the same entries while the taut set changes); otherwise
+  // (a new layout, sliding friction's LU, a refined solve's matrix) as triplets.
+  direct_ = !banded_ && !refine_ &&
+            generalFactorization().beginDirect(condensing_ ? condensation_.reducedRows() : rows);
+  direct_listed_ = true;
+  if (!assemble()) return false;
+  if (direct_ && (!direct_listed_ || unsymmetric_)) {
+    direct_ = false;
+    if (!assemble()) return false;
   }
-  unsymmetric_ = false;
-  if (contacts != nullptr) addContactRows(*contacts, inverse_mass, position);
   if (unsymmetric_) return solveUnsymmetric(rows);
-  if (!solveSymmetric(rows, contacts)) return false;
+  if (!solveSymmetric(rows)) return false;
   if (start_.direction == nullptr) return true;
   return refineOnStartDirections(edges, position, inverse_mass, multiplier, stretch_state);
 }
@@ -210,7 +224,7 @@ bool StiffNewtonStep::solveUnsymmetric(int rows) {
   });
 }
 
-bool StiffNewtonStep::solveSymmetric(int rows, const ContactSet* contacts) {
+bool StiffNewtonStep::solveSymmetric(int rows) {
   // The dense band keeps its own copy of the matrix (refine()).
   if ((banded_ && !dense_band_) || (refine_ && !banded_)) assembleMatrix(rows);
   if (dense_band_) {
@@ -218,15 +232,14 @@ bool StiffNewtonStep::solveSymmetric(int rows, const ContactSet* contacts) {
   } else if (banded_) {
     sparse_band_factorization_.ldlt.compute(matrix_);
     if (sparse_band_factorization_.ldlt.info() != Eigen::Success) return false;
+  } else if (direct_) {
+    if (!generalFactorization().factorizeDirect()) return false;
   } else {
     // The idle rows' stored zeros stay out of the elimination: they only keep the pattern.
-    PatternCachedLdlt& factorization =
-        condensing_ ? condensed_factorization_ : general_factorization_;
+    PatternCachedLdlt& factorization = generalFactorization();
     factorization.leaveOutZeros();
     const int size = condensing_ ? condensation_.reducedRows() : rows;
-    if (!factorization.factorize(triplets_, size, sameLayoutAsLast(contacts))) {
-      return false;
-    }
+    if (!factorization.factorize(triplets_, size)) return false;
   }
   if (!solveAssembled(rhs_, solution_)) return false;
   return !refine_ || refine([this](const Eigen::VectorXd& rhs, Eigen::VectorXd& result) {
@@ -251,25 +264,6 @@ bool StiffNewtonStep::refineOnStartDirections(const EdgeSet& edges,
     }
   }
   return solution_.allFinite();
-}
-
-bool StiffNewtonStep::sameLayoutAsLast(const ContactSet* contacts) {
-  // Without contacts the entries are listed by a fixed walk over the vertices' rows and the
-  // edges' (taut or idle: the same entries), so the same rows list the same entries.
-  layout_.assign(vertex_row_.begin(), vertex_row_.end());
-  for (std::size_t e = 0; e < edge_row_.size(); ++e) {
-    layout_.push_back(edge_row_[e] >= 0 ? edge_row_[e] : idle_row_[e]);
-  }
-  if (condensing_) {  // never with contacts
-    for (std::uint8_t eliminated : condensation_.eliminated()) layout_.push_back(eliminated);
-    const bool same = layout_ == last_condensed_layout_;
-    last_condensed_layout_.swap(layout_);
-    return same;
-  }
-  const bool same = contacts == nullptr && last_contact_free_ && layout_ == last_layout_;
-  last_layout_.swap(layout_);
-  last_contact_free_ = contacts == nullptr;
-  return same;
 }
 
 bool StiffNewtonStep::solveAssembled(const Eigen::VectorXd& rhs, Eigen::VectorXd& result) {

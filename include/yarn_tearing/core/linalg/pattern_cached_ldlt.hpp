@@ -38,6 +38,7 @@ class PatternCachedLdlt {
     leave_out_zeros_ = other.leave_out_zeros_;
     entry_row_.clear();
     entry_col_.clear();
+    direct_values_ = nullptr;
     new_index_.resize(0);
     upper_.resize(0, 0);
     nonzero_.resize(0, 0);
@@ -47,12 +48,27 @@ class PatternCachedLdlt {
   /// From now on, leaves entries that are exactly zero out of the factorization (see above).
   void leaveOutZeros() { leave_out_zeros_ = true; }
 
-  /// Factorizes the size x size matrix of `entries`; false when the factorization fails. With
-  /// `same_as_last`, the caller vouches that the entries list the same (row, column) sequence as
-  /// in its last call (its layout has not changed), which is then not compared entry by entry
-  /// (for a 64 x 64 fabric's Newton system 450,000 entries, 4 % of a tearing step).
-  bool factorize(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size,
-                 bool same_as_last = false);
+  /// Factorizes the size x size matrix of `entries`; false when the factorization fails.
+  bool factorize(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size);
+
+  /// Starts listing the entries of a size x size matrix straight into the analysed pattern, in
+  /// the (row, column) sequence of the last factorize() (addDirect(), then factorizeDirect()):
+  /// no list is built, sorted or compared. False when there is no such sequence for this size.
+  bool beginDirect(Eigen::Index size);
+  /// Adds `value` to the next entry, (row, col), as factorize() would (the lower triangle read,
+  /// duplicates summed); false when (row, col) is not the next entry of that sequence (the
+  /// caller then lists the entries for factorize()).
+  bool addDirect(int row, int col, double value) {
+    if (cursor_ >= entry_row_.size() || entry_row_[cursor_] != row || entry_col_[cursor_] != col) {
+      return false;
+    }
+    const int slot = slot_[cursor_++];
+    if (slot >= 0) direct_values_[slot] += value;
+    return true;
+  }
+  /// Factorizes the entries added since beginDirect(); false when they were fewer than the
+  /// sequence's or the factorization fails.
+  bool factorizeDirect();
   /// Solves with the last factorization.
   template <typename Rhs>
   Eigen::VectorXd solve(const Rhs& rhs) const {
@@ -111,6 +127,8 @@ class PatternCachedLdlt {
   std::vector<int> entry_col_;    ///< column of each entry last placed
   /// Per entry: its index in upper_'s values, -1 for an entry of the upper triangle (not read).
   std::vector<int> slot_;
+  std::size_t cursor_ = 0;           ///< the next entry addDirect() expects
+  double* direct_values_ = nullptr;  ///< upper_'s values while entries are added directly
   Eigen::VectorXi new_index_;  ///< row i of the matrix is row new_index_[i] of the permuted one
   Eigen::SparseMatrix<double> upper_;  ///< upper triangle of P A P^T
   /// With leaveOutZeros(): upper_ without its zero entries off the diagonal, as last analysed.

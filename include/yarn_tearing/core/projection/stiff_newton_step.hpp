@@ -100,10 +100,6 @@ class StiffNewtonStep {
   void exactResidual(const EdgeSet& edges, const std::vector<Eigen::Vector3d>& position,
                      const std::vector<double>& inverse_mass, const std::vector<double>& multiplier,
                      const EdgeStretchState& stretch_state);
-  /// Whether this solve's rows (vertex_row_, edge_row_, idle_row_) are laid out as in the last
-  /// one on the general path and neither has contacts: then its entries list the same pattern
-  /// (PatternCachedLdlt::factorize's `same_as_last`). Keeps this layout for the next.
-  bool sameLayoutAsLast(const ContactSet* contacts);
   /// Solves the assembled symmetric system for `rhs`, into `result`.
   bool solveAssembled(const Eigen::VectorXd& rhs, Eigen::VectorXd& result);
   /// One pass of iterative refinement of solution_ on the assembled matrix (matrix_, or the
@@ -135,17 +131,27 @@ class StiffNewtonStep {
                  const EdgeIncidence& incidence, const std::vector<std::uint8_t>& taut,
                  const ContactSet* contacts);
   /// Adds `value` to entry (row, col) of the system: into the dense band (dense_band_, the
-  /// lower triangle) or as a triplet (both triangles listed).
+  /// lower triangle), straight into the analysed pattern (direct_) or as a triplet (both
+  /// triangles listed); a condensed system's rows are its reduced ones.
   void addEntry(int row, int col, double value) {
     if (dense_band_) {
       dense_band_factorization_.add(row, col, value);
-    } else if (condensing_) {
-      const int r = condensation_.reducedRow(row);
-      const int c = condensation_.reducedRow(col);
-      if (r >= 0 && c >= 0) triplets_.emplace_back(r, c, value);
+      return;
+    }
+    if (condensing_) {
+      row = condensation_.reducedRow(row);
+      col = condensation_.reducedRow(col);
+      if (row < 0 || col < 0) return;
+    }
+    if (direct_) {
+      direct_listed_ = direct_listed_ && generalFactorization().addDirect(row, col, value);
     } else {
       triplets_.emplace_back(row, col, value);
     }
+  }
+  /// The general path's factorization of this solve: the condensed or the full system's.
+  PatternCachedLdlt& generalFactorization() {
+    return condensing_ ? condensed_factorization_ : general_factorization_;
   }
   /// Adds a 3 x 3 block at (row, col) (addEntry).
   void addBlock(int row, int col, const Eigen::Matrix3d& block);
@@ -170,7 +176,7 @@ class StiffNewtonStep {
   /// Solves the system with sliding friction columns (LU) into solution_.
   bool solveUnsymmetric(int rows);
   /// Factorizes the symmetric system (banded or general) and solves it into solution_.
-  bool solveSymmetric(int rows, const ContactSet* contacts);
+  bool solveSymmetric(int rows);
   /// Refines solution_ on the exact system where edge ends take their start directions.
   bool refineOnStartDirections(const EdgeSet& edges, const std::vector<Eigen::Vector3d>& position,
                                const std::vector<double>& inverse_mass,
@@ -283,10 +289,11 @@ class StiffNewtonStep {
   const std::vector<double>* inverse_mass_ = nullptr;  ///< this solve's w_v [1/kg]
   Eigen::VectorXd reduced_rhs_;                        ///< a right-hand side condensed
   Eigen::VectorXd reduced_solution_;                   ///< its solution
-  std::vector<int> layout_;       ///< this solve's vertex rows, then each edge's (sameLayoutAsLast)
-  std::vector<int> last_layout_;  ///< the last general-path solve's
-  std::vector<int> last_condensed_layout_;  ///< the last condensed solve's
-  bool last_contact_free_ = false;          ///< the last general-path solve had no contacts
+  /// This solve's entries go straight into generalFactorization()'s pattern (addEntry()), not
+  /// into triplets_.
+  bool direct_ = false;
+  /// Every entry added so far was the next of generalFactorization()'s last sequence.
+  bool direct_listed_ = false;
   const std::vector<std::uint8_t>* movable_ = nullptr;  ///< the movable edges of this apply
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> matrix_;
