@@ -8,6 +8,7 @@
 
 #include "yarn_tearing/core/contact/deep_overlap.hpp"
 #include "yarn_tearing/ros/input_bounds.hpp"
+#include "yarn_tearing/ros/obstacle_move_limit.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
@@ -19,7 +20,9 @@ constexpr double kWarnPeriod = 2.0;  ///< [s] between repeated warnings of one r
 
 ObstacleTracker::ObstacleTracker(const FrameTransformer& frames, std::vector<ObstacleSpec> specs,
                                  Simulator& simulator)
-    : frames_(frames), warnings_(kWarnPeriod, static_cast<std::size_t>(RefusalReason::kCount)) {
+    : frames_(frames),
+      max_step_travel_(obstacleStepLimit(simulator.scene())),
+      warnings_(kWarnPeriod, static_cast<std::size_t>(RefusalReason::kCount)) {
   for (ObstacleSpec& spec : specs) {
     Tracked tracked;
     tracked.follower = FrameFollower(spec.attached_frame, FrameMotion::still(spec.obstacle.pose));
@@ -126,9 +129,12 @@ bool ObstacleTracker::outrunsFrames(const ros::Time& step_end) const {
 void ObstacleTracker::beforeStep(Simulator& simulator, const ros::Time& step_end) {
   for (Tracked& tracked : tracked_) {
     if (!tracked.spec.attached() || !tracked.placed) continue;
+    const auto index = static_cast<std::size_t>(tracked.index);
     try {
-      simulator.setObstaclePose(static_cast<std::size_t>(tracked.index),
-                                tracked.follower.poseAt(frames_, step_end) * tracked.spec.offset);
+      const Eigen::Isometry3d target =
+          tracked.follower.poseAt(frames_, step_end) * tracked.spec.offset;
+      simulator.setObstaclePose(
+          index, limitedObstacleMove(simulator.obstacles()[index].pose, target, max_step_travel_));
     } catch (const ObstacleThroughYarn& e) {  // a frame jumped into a yarn: it stays where it was
       warnLookupFailed(tracked, InputRejected(RefusalReason::kThroughYarn, e.what()));
     } catch (const std::exception& e) {  // past the core's bounds: an extrapolation run away

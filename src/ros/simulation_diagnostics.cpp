@@ -14,6 +14,8 @@ constexpr double kSlowFraction = 0.9;  ///< achieved / target factor below which
 /// reset or a pause holds too few steps to say more than the step granularity.
 constexpr double kMinWindow = 0.2;
 constexpr double kMinPeriod = 0.01;  ///< [s] shortest ~diagnostic_period honoured
+/// [s] wall a step in progress may run before a report says so in its summary (WARN).
+constexpr double kLongStep = 0.5;
 
 }  // namespace
 
@@ -108,6 +110,10 @@ void SimulationDiagnostics::report(diagnostic_updater::DiagnosticStatusWrapper& 
     status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "non-finite step health");
   } else if (unconverged_ > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "length projection did not converge");
+  } else if (pacing_.step_in_progress > kLongStep) {
+    status.summary(
+        diagnostic_msgs::DiagnosticStatus::WARN,
+        "one step has been running for " + std::to_string(pacing_.step_in_progress) + " s");
   } else if (dropped || slow) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "slower than real_time_factor: " + std::to_string(pacing_.lag) + " s behind, " +
@@ -128,6 +134,7 @@ void SimulationDiagnostics::report(diagnostic_updater::DiagnosticStatusWrapper& 
   status.add("achieved real-time factor", achieved_factor_);
   status.add("dropped steps (total)", pacing_.dropped_steps);
   status.add("lag behind schedule [s]", pacing_.lag);
+  status.add("step in progress [s]", pacing_.step_in_progress);
   status.add("costliest stage", busy > 0.0 ? costliest_name : std::string("none"));
   for (std::size_t i = 0; i < stage_seconds_.size(); ++i) {
     status.add(std::string("wall time share: ") + stageName(static_cast<LoopStage>(i)) + " [-]",

@@ -7,6 +7,7 @@
 #include <yarn_tearing/BreakEvent.h>
 
 #include <algorithm>
+#include <boost/make_shared.hpp>
 #include <chrono>
 #include <cmath>
 
@@ -28,6 +29,8 @@ constexpr double kStepBudget = 0.02;    ///< [s] wall: longest stepping before s
 /// outrun (its follower would stand still); then it steps on.
 constexpr double kFrameWait = 0.5;
 constexpr double kFramePoll = 0.001;  ///< [s] wall: sleep while waiting for a frame's sample
+/// [s] wall between the service thread's looks at a step under way (states, /diagnostics).
+constexpr double kStepWatchPeriod = 0.005;
 /// break_events must never be dropped: at least this, and at least the scene's edge count (each
 /// edge tears at most once between resets, so no burst can be longer).
 constexpr std::uint32_t kBreakQueue = 10000;
@@ -73,7 +76,8 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
       refusal_warnings_(kWarnPeriod, static_cast<std::size_t>(WarningSource::kCount) * kNumReasons),
       wrenches_(private_nh, tf_buffer_, config.node.frame_id),
       obstacle_wrenches_(private_nh),
-      break_log_(std::max<std::size_t>(kBreakQueue, simulator_.scene().edges.size())) {
+      break_log_(std::max<std::size_t>(kBreakQueue, simulator_.scene().edges.size())),
+      services_(private_nh) {
   states_pub_ = nh_.advertise<YarnStateArray>("yarn_states", kStateQueue);
   if (!simulator_.scene().fabrics.empty()) {
     fabric_states_pub_ = nh_.advertise<FabricStateArray>("fabric_states", kStateQueue);
@@ -87,10 +91,14 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
   }
   force_sub_ = nh_.subscribe("applied_force", kInputQueue, &YarnTearingNode::onAppliedForce, this);
   grasp_sub_ = nh_.subscribe("grasp", kInputQueue, &YarnTearingNode::onGrasp, this);
-  reset_srv_ = private_nh_.advertiseService("reset", &YarnTearingNode::onReset, this);
-  pause_srv_ = private_nh_.advertiseService("set_paused", &YarnTearingNode::onSetPaused, this);
+  ros::NodeHandle& service_nh = services_.handle();
+  reset_srv_ = service_nh.advertiseService("reset", &YarnTearingNode::onReset, this);
+  pause_srv_ = service_nh.advertiseService("set_paused", &YarnTearingNode::onSetPaused, this);
   break_log_srv_ =
-      private_nh_.advertiseService("get_break_events", &YarnTearingNode::onGetBreakEvents, this);
+      service_nh.advertiseService("get_break_events", &YarnTearingNode::onGetBreakEvents, this);
+  step_watch_timer_ =
+      service_nh.createWallTimer(ros::WallDuration(kStepWatchPeriod),
+                                 [this](const ros::WallTimerEvent& /*event*/) { onStepWatch(); });
 
   reconfigure_ = std::make_unique<dynamic_reconfigure::Server<YarnTearingConfig>>(
       reconfigure_mutex_, private_nh_);
@@ -110,14 +118,26 @@ YarnTearingNode::YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh,
       config_.node.real_time_factor == 0.0 ? " (as fast as possible)" : "");
 }
 
+YarnTearingNode::~YarnTearingNode() {
+  if (loop_lock_.owns_lock()) {
+    loop_lock_.unlock();  // run() threw: a service callback may be waiting for the mutex
+  }
+  services_.stop();
+}
+
 void YarnTearingNode::run() {
   // A NodeHandle's queue is the global one unless the nodelet set its own (a ros::CallbackQueue).
   auto& queue = dynamic_cast<ros::CallbackQueue&>(*nh_.getCallbackQueue());
+  loop_lock_.lock();
   restartPacing();
   restartPublishSchedule();
+  keepStatesToResend();  // a long first step re-sends the initial state
+  loop_lock_.unlock();
+  services_.start();
   while (ros::ok() && !stop_requested_) {
     double mark = wallSeconds();
-    queue.callAvailable();
+    queue.callAvailable();  // its callbacks take mutex_ themselves
+    loop_lock_.lock();
     mark = recordStage(LoopStage::kCallbacks, mark);
     stepCycle();
     mark = wallSeconds();
@@ -127,18 +147,16 @@ void YarnTearingNode::run() {
     }
     diagnostics_.update(mark, pacingStatus());
     const double idle = idleTimeout();
-    if (waiting_for_frames_) {
-      mark = wallSeconds();
-      queue.callAvailable(ros::WallDuration(idle));
-      recordStage(LoopStage::kFrameWait, mark);
-    } else if (idle > 0.0) {
-      queue.callAvailable(ros::WallDuration(idle));  // on schedule: not a cost of the loop
-    } else {
-      mark = wallSeconds();
-      queue.callAvailable();
-      recordStage(LoopStage::kCallbacks, mark);
+    const bool waiting = waiting_for_frames_;
+    loop_lock_.unlock();
+    mark = wallSeconds();
+    queue.callAvailable(ros::WallDuration(idle));
+    if (waiting || idle <= 0.0) {  // on schedule, the idle wait is not a cost of the loop
+      const std::lock_guard<std::unique_lock<std::mutex>> relock(loop_lock_);
+      recordStage(waiting ? LoopStage::kFrameWait : LoopStage::kCallbacks, mark);
     }
   }
+  services_.stop();
 }
 
 double YarnTearingNode::recordStage(LoopStage stage, double since) {
@@ -149,13 +167,14 @@ double YarnTearingNode::recordStage(LoopStage stage, double since) {
 
 PacingStatus YarnTearingNode::pacingStatus() const {
   PacingStatus pacing;
-  pacing.simulated_time = simulator_.time();
+  pacing.simulated_time = simulatedTime();
   pacing.target_real_time_factor = config_.node.real_time_factor;
   pacing.dropped_steps = scheduler_.droppedSteps();
   pacing.paused = paused_;
   pacing.active_forces = inputs_.activeForces();
   pacing.active_grasps = inputs_.activeGrasps();
-  pacing.lag = paused_ ? 0.0 : scheduler_.lag(wallSeconds(), simulator_.time());
+  pacing.lag = paused_ ? 0.0 : scheduler_.lag(wallSeconds(), simulatedTime());
+  pacing.step_in_progress = stepping_ ? wallSeconds() - step_started_ : 0.0;
   return pacing;
 }
 
@@ -199,14 +218,15 @@ void YarnTearingNode::stepCycle() {
   const double start = recordStage(LoopStage::kTargets, targets_start);
   if (scheduler_.asFastAsPossible()) {
     do {
-      if (waitForFrames()) break;
-      stepOnce(1.0);
+      if (waitForFrames() || !stepOnce(1.0)) break;
     } while (wallSeconds() - start < kStepBudget);
   } else {
     const std::uint64_t due = scheduler_.stepsDue(start, simulator_.time());
     for (std::uint64_t k = 1; k <= due; ++k) {
       if (waitForFrames()) break;
-      stepOnce(static_cast<double>(k) / static_cast<double>(due));
+      if (!stepOnce(static_cast<double>(k) / static_cast<double>(due))) {
+        return;  // a reset or pause came during the step: pacing restarted, nothing is behind
+      }
       if (wallSeconds() - start > kStepBudget) {
         break;  // the rest is caught up in the next cycles (or dropped after max_lag)
       }
@@ -219,13 +239,19 @@ void YarnTearingNode::stepCycle() {
   recordStage(LoopStage::kPublishing, clock_start);
 }
 
-void YarnTearingNode::stepOnce(double fraction) {
+bool YarnTearingNode::stepOnce(double fraction) {
   double mark = wallSeconds();
   const ros::Time step_end = stampOf(simulator_.time() + simulator_.parameters().time_step);
   inputs_.beforeStep(simulator_, fraction, step_end);
   obstacles_.beforeStep(simulator_, step_end);
   mark = recordStage(LoopStage::kTargets, mark);
+  time_before_step_ = simulator_.time();
+  step_started_ = mark;
+  stepping_ = true;
+  loop_lock_.unlock();  // the service thread answers meanwhile, and leaves the simulator alone
   simulator_.step();
+  loop_lock_.lock();
+  stepping_ = false;
   mark = recordStage(LoopStage::kPhysics, mark);
   diagnostics_.recordStep(simulator_.lastHealth(), simulator_.scene());
   if (!simulator_.lastHealth().restored_yarns.empty()) {
@@ -237,6 +263,44 @@ void YarnTearingNode::stepOnce(double fraction) {
     publishState();
   }
   recordStage(LoopStage::kPublishing, mark);
+  return !applyPendingRequests();
+}
+
+bool YarnTearingNode::applyPendingRequests() {
+  const bool pending = reset_pending_ || pause_pending_.has_value();
+  if (reset_pending_) {
+    reset_pending_ = false;
+    resetNow();
+  }
+  if (pause_pending_) {
+    setPaused(*pause_pending_);
+    pause_pending_.reset();
+    reconfigure_->updateConfig(currentTuning());  // dynamic_reconfigure clients see it
+  }
+  return pending;
+}
+
+void YarnTearingNode::onStepWatch() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (!stepping_) {
+    return;  // between steps run() publishes and reports itself
+  }
+  const double now = wallSeconds();
+  // Only once the step has run a whole period: the deadline that fell in its first period is left
+  // to run(), which publishes the new state right after the step, so no deadline goes twice.
+  const bool long_step = now - step_started_ >= 1.0 / config_.node.publish_rate;
+  const bool resendable = last_states_ || last_fabric_states_;
+  if (resendable && long_step && !config_.node.publishesInSimulatedTime() &&
+      publish_schedule_.due(now)) {
+    // The state as of the last step, as while paused: stamp and sim_time unchanged.
+    if (last_states_ && states_pub_.getNumSubscribers() > 0) {
+      states_pub_.publish(last_states_);
+    }
+    if (last_fabric_states_ && fabric_states_pub_.getNumSubscribers() > 0) {
+      fabric_states_pub_.publish(last_fabric_states_);
+    }
+  }
+  diagnostics_.update(now, pacingStatus());
 }
 
 void YarnTearingNode::reportRestoredYarns() {
@@ -281,17 +345,34 @@ void YarnTearingNode::publishBreakEvents() {
 
 void YarnTearingNode::publishState() {
   const ros::Time stamp = stampOf(simulator_.time());
+  // What is not built now is not re-sent later: it would be older than what follows it.
+  last_states_.reset();
+  last_fabric_states_.reset();
   if (states_pub_.getNumSubscribers() > 0) {
-    states_pub_.publish(toYarnStateArray(simulator_, config_.node.frame_id, stamp));
+    last_states_ = boost::make_shared<const YarnStateArray>(
+        toYarnStateArray(simulator_, config_.node.frame_id, stamp));
+    states_pub_.publish(last_states_);
   }
   if (fabric_states_pub_ && fabric_states_pub_.getNumSubscribers() > 0) {
-    fabric_states_pub_.publish(toFabricStateArray(simulator_, config_.node.frame_id, stamp));
+    last_fabric_states_ = boost::make_shared<const FabricStateArray>(
+        toFabricStateArray(simulator_, config_.node.frame_id, stamp));
+    fabric_states_pub_.publish(last_fabric_states_);
   }
   if (markers_pub_.getNumSubscribers() > 0) {
     markers_pub_.publish(buildMarkers(stamp));
   }
   wrenches_.publish(simulator_, inputs_.graspFrames(), stamp);
   publishObstacleWrenches(stamp);
+}
+
+void YarnTearingNode::keepStatesToResend() {
+  const ros::Time stamp = stampOf(simulator_.time());
+  last_states_ = boost::make_shared<const YarnStateArray>(
+      toYarnStateArray(simulator_, config_.node.frame_id, stamp));
+  if (fabric_states_pub_) {
+    last_fabric_states_ = boost::make_shared<const FabricStateArray>(
+        toFabricStateArray(simulator_, config_.node.frame_id, stamp));
+  }
 }
 
 visualization_msgs::MarkerArray YarnTearingNode::buildMarkers(const ros::Time& stamp) {
@@ -349,6 +430,7 @@ YarnTearingConfig YarnTearingNode::currentTuning() const {
 }
 
 void YarnTearingNode::onReconfigure(YarnTearingConfig& tuning, std::uint32_t /*level*/) {
+  const std::lock_guard<std::mutex> lock(mutex_);
   SimulationParameters parameters = simulator_.parameters();
   // The start parameters' checks: a value that is not a number in its range keeps the current one.
   tuning.real_time_factor =
@@ -412,6 +494,7 @@ void YarnTearingNode::publishClock() {
 }
 
 void YarnTearingNode::onAppliedForce(const AppliedForce::ConstPtr& msg) {
+  const std::lock_guard<std::mutex> lock(mutex_);
   try {
     inputs_.handleAppliedForce(*msg, simulator_);
   } catch (const InputRejected& e) {
@@ -423,6 +506,7 @@ void YarnTearingNode::onAppliedForce(const AppliedForce::ConstPtr& msg) {
 }
 
 void YarnTearingNode::onGrasp(const Grasp::ConstPtr& msg) {
+  const std::lock_guard<std::mutex> lock(mutex_);
   try {
     inputs_.handleGrasp(*msg, simulator_);
   } catch (const InputRejected& e) {
@@ -449,11 +533,22 @@ void YarnTearingNode::warnRefused(WarningSource source, const char* topic, int v
 
 bool YarnTearingNode::onReset(std_srvs::Empty::Request& /*request*/,
                               std_srvs::Empty::Response& /*response*/) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (stepping_) {
+    reset_pending_ = true;  // applied before a pending pause: a reset keeps the pause state
+    return true;
+  }
+  resetNow();
+  return true;
+}
+
+void YarnTearingNode::resetNow() {
   simulator_.reset();
   inputs_.clear();
   markers_.clearBreaks();
   break_log_.clear();
   restartPacing();
+  keepStatesToResend();  // never re-send a state from before the reset
   // A reset never publishes at once: however many resets come, states keep publish_rate (in wall
   // time the schedule simply goes on; in simulated time it starts one period after time 0).
   if (config_.node.publishesInSimulatedTime()) {
@@ -461,11 +556,16 @@ bool YarnTearingNode::onReset(std_srvs::Empty::Request& /*request*/,
   }
   diagnostics_.restartWindow();
   ROS_INFO("yarn_tearing_node: reset");
-  return true;
 }
 
 bool YarnTearingNode::onGetBreakEvents(GetBreakEvents::Request& request,
                                        GetBreakEvents::Response& response) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (reset_pending_) {  // answered as after the reset, which the caller may have had answered
+    response.first = request.first;
+    response.total = 0;
+    return true;
+  }
   response.events = break_log_.since(request.first);
   response.first = std::max(request.first, break_log_.oldest());
   response.total = break_log_.total();
@@ -474,10 +574,17 @@ bool YarnTearingNode::onGetBreakEvents(GetBreakEvents::Request& request,
 
 bool YarnTearingNode::onSetPaused(std_srvs::SetBool::Request& request,
                                   std_srvs::SetBool::Response& response) {
-  setPaused(request.data);
-  reconfigure_->updateConfig(currentTuning());  // dynamic_reconfigure clients see it
+  std::unique_lock<std::mutex> lock(mutex_);
   response.success = true;
-  response.message = paused_ ? "paused" : "running";
+  response.message = request.data ? "paused" : "running";
+  if (stepping_) {
+    pause_pending_ = request.data;  // from the end of the step under way
+    return true;
+  }
+  setPaused(request.data);
+  const YarnTearingConfig tuning = currentTuning();
+  lock.unlock();  // the reconfigure server's mutex is taken after mutex_ only by run()'s thread
+  reconfigure_->updateConfig(tuning);  // dynamic_reconfigure clients see it
   return true;
 }
 

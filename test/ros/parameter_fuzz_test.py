@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""200 seeded mutations of a valid parameter file (infinities, 1e308, 1e-300, wrong
-types, huge strings, missing and unknown keys, scenes past the budget) are each loaded by
+"""~cases (200) seeded mutations of a valid parameter file (infinities, 1e308, 1e-300, wrong
+types, huge strings, missing and unknown keys, yarns and fabrics past the budget) are each loaded by
 check_config, which validates exactly as yarn_tearing_node does and then simulates up to 1 s.
 Each must exit 0 (valid, and the simulation stayed finite) or 1 with a message naming a parameter
 of its namespace; never 3 (valid but non-finite) and never a signal."""
@@ -15,7 +15,7 @@ import rospy
 import rostest
 
 SEED = 10
-CASES = 200
+CASES = 200     # unless ~cases says
 TIMEOUT = 30.0  # [s] per case
 HUGE = 100000   # [characters]
 
@@ -57,6 +57,10 @@ def mutate(config, rng):
             count, vertices = rng.choice([(11, 100000), (3, 2000)])  # past / within budget
             config["yarns"] = [dict(config["yarns"][0], name="y%d" % i, num_vertices=vertices)
                                for i in range(count)]
+        elif action < 0.5 and isinstance(config.get("fabrics"), list) and config["fabrics"] and \
+                isinstance(config["fabrics"][0], dict):
+            ends, picks = rng.choice([(577, 576), (257, 256), (16, 12)])  # past / within budget
+            config["fabrics"][0] = dict(config["fabrics"][0], ends=ends, picks=picks)
         else:
             value = rng.choice(VALUES)
             if value is None:
@@ -72,8 +76,9 @@ class ParameterFuzzTest(unittest.TestCase):
         materials = rosparam.load_file(rospy.get_param("~materials"))[0][0]
         valid = rosparam.load_file(rospy.get_param("~config"))[0][0]
         rng = random.Random(SEED)
+        cases = rospy.get_param("~cases", CASES)
         outcomes = {0: 0, 1: 0}
-        for case in range(CASES):
+        for case in range(cases):
             name = "fuzz_%d" % case
             config = mutate(valid, rng)
             try:
@@ -91,7 +96,7 @@ class ParameterFuzzTest(unittest.TestCase):
             rosparam.delete_param("/" + name)
         rospy.loginfo("parameter fuzz: %d valid, %d refused", outcomes[0], outcomes[1])
         self.assertGreater(outcomes[0], 10, "too few mutations left the file valid")
-        self.assertGreater(outcomes[1], CASES // 2, "too few mutations were refused")
+        self.assertGreater(outcomes[1], cases // 2, "too few mutations were refused")
 
 
 if __name__ == "__main__":

@@ -35,17 +35,31 @@ def vector_norm(v):
     return math.sqrt(v.x * v.x + v.y * v.y + v.z * v.z)
 
 
-def state_is_finite(states):
-    """True when every number of every yarn in a YarnStateArray is finite."""
-    for yarn in states.yarns:
-        for p in list(yarn.positions) + list(yarn.velocities) + list(yarn.support_forces):
-            if not all(math.isfinite(c) for c in (p.x, p.y, p.z)):
-                return False
-        for values in (yarn.rest_lengths, yarn.tensions, yarn.stresses, yarn.strains,
-                       yarn.plastic_strains, yarn.strain_limits):
-            if not all(math.isfinite(x) for x in values):
+def parts_are_finite(parts, vector_fields, number_fields):
+    """True when every vector of `vector_fields` and every number of `number_fields` of each of
+    `parts` (the yarns of a YarnStateArray, the fabrics of a FabricStateArray) is finite."""
+    for part in parts:
+        for name in vector_fields:
+            for p in getattr(part, name):
+                if not all(math.isfinite(c) for c in (p.x, p.y, p.z)):
+                    return False
+        for name in number_fields:
+            if not all(math.isfinite(x) for x in getattr(part, name)):
                 return False
     return True
+
+
+def state_is_finite(states):
+    """True when every number of every yarn in a YarnStateArray is finite."""
+    return parts_are_finite(states.yarns, ("positions", "velocities", "support_forces"),
+                            ("rest_lengths", "tensions", "stresses", "strains", "plastic_strains",
+                             "strain_limits"))
+
+
+def fabric_state_is_finite(states):
+    """True when every number of every fabric in a FabricStateArray is finite."""
+    return parts_are_finite(states.fabrics, ("positions", "velocities", "support_forces"),
+                            ("rest_lengths", "tensions", "stresses", "strains", "plastic_strains"))
 
 
 class TopicRecorder:

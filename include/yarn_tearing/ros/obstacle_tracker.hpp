@@ -36,8 +36,8 @@ class ObstacleTracker {
   /// Before a cycle of steps: looks up the attached obstacles' frames; those resolved for the
   /// first time join the simulator.
   void beginCycle(Simulator& simulator);
-  /// Before each step: puts each attached obstacle where its frame is at `step_end` (the ROS time
-  /// of the step's end).
+  /// Before each step: moves each attached obstacle towards where its frame is at `step_end` (the
+  /// ROS time of the step's end), at most obstacleStepLimit() a step (limitedObstacleMove).
   void beforeStep(Simulator& simulator, const ros::Time& step_end);
 
   /// True when an attached obstacle's frame moves and `step_end` is past where its samples can be
@@ -71,6 +71,7 @@ class ObstacleTracker {
   void placeInSimulator(Simulator& simulator);
 
   const FrameTransformer& frames_;
+  double max_step_travel_;        ///< [m] an attached obstacle's longest move in one step
   std::vector<Tracked> tracked_;  ///< in ~obstacles order
   WarningThrottle warnings_;      ///< per RefusalReason
 };

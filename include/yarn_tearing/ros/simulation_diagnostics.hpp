@@ -25,6 +25,9 @@ struct PacingStatus {
   /// Simulated time the simulation is behind its real_time_factor schedule [s] (0 when on time,
   /// as fast as possible or paused); past max_lag (in wall seconds) steps are dropped instead.
   double lag = 0.0;
+  /// Wall time [s] the step under way has taken so far (0 between steps: a report sent from the
+  /// service thread while a step runs says how long it has run).
+  double step_in_progress = 0.0;
 };
 
 /// The parts of the node's stepping loop whose wall time the diagnostics report.

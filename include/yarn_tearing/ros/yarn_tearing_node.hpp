@@ -10,10 +10,14 @@
 #include <atomic>
 #include <boost/thread/recursive_mutex.hpp>
 #include <memory>
+#include <mutex>
+#include <optional>
 
 #include "yarn_tearing/AppliedForce.h"
+#include "yarn_tearing/FabricStateArray.h"
 #include "yarn_tearing/GetBreakEvents.h"
 #include "yarn_tearing/Grasp.h"
+#include "yarn_tearing/YarnStateArray.h"
 #include "yarn_tearing/YarnTearingConfig.h"
 #include "yarn_tearing/core/simulation/simulator.hpp"
 #include "yarn_tearing/ros/break_event_log.hpp"
@@ -22,6 +26,7 @@
 #include "yarn_tearing/ros/marker_builder.hpp"
 #include "yarn_tearing/ros/obstacle_tracker.hpp"
 #include "yarn_tearing/ros/rate_schedule.hpp"
+#include "yarn_tearing/ros/service_thread.hpp"
 #include "yarn_tearing/ros/simulation_config.hpp"
 #include "yarn_tearing/ros/simulation_diagnostics.hpp"
 #include "yarn_tearing/ros/stamp_clock.hpp"
@@ -43,12 +48,22 @@ namespace ros_layer {
 /// the step that tore), yarn_materials (latched YAML), /clock when publish_clock, /diagnostics.
 /// Services: ~reset (std_srvs/Empty), ~set_paused (std_srvs/SetBool); dynamic_reconfigure
 /// (cfg/YarnTearing.cfg) in the private namespace.
-/// Single-threaded: callbacks run between stepping cycles in run(). Shared by yarn_tearing_node
-/// (node_runner) and the nodelet (YarnTearingNodelet).
+/// Threads: run() steps, publishes and serves the inputs (applied_force, grasp,
+/// dynamic_reconfigure) between stepping cycles; the services and a diagnostics timer run on a
+/// ServiceThread, so they answer while a step runs, however long. mutex_ guards everything the two
+/// share; run() holds it except inside Simulator::step() and while it waits for callbacks. While a
+/// step runs longer than a publishing period, the last states are re-sent at publish_rate. A
+/// ~reset or ~set_paused that comes during a step is applied as soon as that step ends (after its
+/// break events are published), before anything else. Shared by yarn_tearing_node (node_runner)
+/// and the nodelet (YarnTearingNodelet).
 class YarnTearingNode {
  public:
   /// Builds the simulator; throws std::invalid_argument when the core rejects the configuration.
   YarnTearingNode(ros::NodeHandle nh, ros::NodeHandle private_nh, const SimulationConfig& config);
+  /// Stops the service thread before anything it uses is destroyed.
+  ~YarnTearingNode();
+  YarnTearingNode(const YarnTearingNode&) = delete;
+  YarnTearingNode& operator=(const YarnTearingNode&) = delete;
 
   /// Steps, publishes and serves the callbacks of `nh`'s callback queue (the global one unless
   /// set) until ROS shuts down or requestStop() is called.
@@ -68,7 +83,18 @@ class YarnTearingNode {
   void warnRefused(WarningSource source, const char* topic, int vertex, const InputRejected& e);
   /// After a step that restored yarns: forgets their inputs, logs one error (throttled).
   void reportRestoredYarns();
+  /// ~reset (service thread): at once between steps, else when the step under way ends.
   bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
+  /// Back to the initial scene (mutex_ held, no step under way).
+  void resetNow();
+  /// Applies a ~reset or ~set_paused that came during the step that just ended (mutex_ held);
+  /// true when one was applied (the cycle then ends: pacing was restarted).
+  bool applyPendingRequests();
+  /// Service thread, every kStepWatchPeriod: while a step runs, re-sends the last yarn_states and
+  /// fabric_states at publish_rate (wall-timed publishing only) and keeps /diagnostics going.
+  void onStepWatch();
+  /// Simulated time [s] as of the last finished step (readable while a step runs).
+  double simulatedTime() const { return stepping_ ? time_before_step_ : simulator_.time(); }
   /// ~get_break_events: the logged break events from request.first on.
   bool onGetBreakEvents(GetBreakEvents::Request& request, GetBreakEvents::Response& response);
   bool onSetPaused(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
@@ -90,10 +116,15 @@ class YarnTearingNode {
   bool waitForFrames();
   /// Adds the wall time since `since` [s] to `stage` in the diagnostics; returns now [s].
   double recordStage(LoopStage stage, double since);
-  /// One physics step; `fraction` (0..1] of the cycle done after it, for grasp interpolation.
-  void stepOnce(double fraction);
+  /// One physics step (mutex_ released while the simulator steps); `fraction` (0..1] of the cycle
+  /// done after it, for grasp interpolation. False when a request that came during the step was
+  /// applied after it (the cycle must end).
+  bool stepOnce(double fraction);
   void publishBreakEvents();
   void publishState();
+  /// Builds the states to re-send during a long step from the simulator as it is now (at start
+  /// and after a reset; otherwise publishState() keeps what it published, and only that).
+  void keepStatesToResend();
   /// The force [N] the yarns exerted on each obstacle in the last step and its torque [N m] about
   /// frame_id's origin, in frame_id, on ~obstacles/<name>/wrench (only when subscribed).
   void publishObstacleWrenches(const ros::Time& stamp);
@@ -135,6 +166,19 @@ class YarnTearingNode {
   ros::Publisher clock_pub_;
   ros::Subscriber force_sub_;
   ros::Subscriber grasp_sub_;
+  /// Guards what the service thread shares with run(); run() holds it through loop_lock_.
+  std::mutex mutex_;
+  std::unique_lock<std::mutex> loop_lock_{mutex_, std::defer_lock};
+  bool stepping_ = false;              ///< Simulator::step() under way (mutex_ released)
+  double time_before_step_ = 0.0;      ///< [s] simulated time when it began
+  double step_started_ = 0.0;          ///< [s] wall time when it began
+  bool reset_pending_ = false;         ///< ~reset came during the step under way
+  std::optional<bool> pause_pending_;  ///< ~set_paused came during the step under way
+  ServiceThread services_;             ///< ~reset, ~set_paused, ~get_break_events, diagnostics
+  ros::WallTimer step_watch_timer_;    ///< on services_
+  /// The last states published or kept (re-sent while a step runs).
+  YarnStateArray::ConstPtr last_states_;
+  FabricStateArray::ConstPtr last_fabric_states_;
   ros::ServiceServer reset_srv_;
   ros::ServiceServer pause_srv_;
   ros::ServiceServer break_log_srv_;  ///< ~get_break_events
