@@ -2,25 +2,27 @@
 # Builds the ROS-free simulation core twice and runs its GoogleTest suite with each build:
 #   build/core      Release
 #   build/sanitize  AddressSanitizer + UndefinedBehaviorSanitizer (any report fails the run), all
-#                   but the parameterised dt = 1e-4 cases
+#                   but the parameterised dt = 1e-4 cases; only the tests are built
 # Also builds the benchmarks (build/core/yarn_tearing_bench) without running them.
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 jobs="$(nproc)"
 
-# build_and_test <build dir> <ctest exclude regex ("" for none)> <cmake args...>
+# build_and_test <build dir> <ctest exclude regex ("" for none)> <target ("" for all)>
+#   <cmake args...>
 build_and_test() {
   local dir="$1"
   local exclude="$2"
-  shift 2
+  local target="$3"
+  shift 3
   cmake -S "${repo}" -B "${dir}" -DYARN_TEARING_CORE_ONLY=ON "$@" > /dev/null
-  cmake --build "${dir}" -j"${jobs}"
+  cmake --build "${dir}" -j"${jobs}" ${target:+--target "${target}"}
   (cd "${dir}" && ctest --output-on-failure -j"${jobs}" ${exclude:+-E "${exclude}"})
 }
 
 echo "== core tests (Release)"
-build_and_test "${repo}/build/core" "" -DCMAKE_BUILD_TYPE=Release
+build_and_test "${repo}/build/core" "" "" -DCMAKE_BUILD_TYPE=Release
 
 echo "== core tests (AddressSanitizer + UndefinedBehaviorSanitizer)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
@@ -28,5 +30,5 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # The sanitizers look for memory and undefined-behaviour errors, which the code paths show at any
 # step size: the parameterised cases at dt = 1e-4 (names ending dt1em4, ten times the steps of
 # their dt1em3 twins) run in Release only.
-build_and_test "${repo}/build/sanitize" "dt1em4" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DYARN_TEARING_SANITIZE=ON
+build_and_test "${repo}/build/sanitize" "dt1em4" yarn_tearing_core_tests \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DYARN_TEARING_SANITIZE=ON

@@ -4,7 +4,9 @@ types, huge strings, missing and unknown keys, yarns and fabrics past the budget
 check_config, which validates exactly as yarn_tearing_node does and then simulates up to 1 s.
 Each must exit 0 (valid, and the simulation stayed finite) or 1 with a message naming a parameter
 of its namespace; never 3 (valid but non-finite) and never a signal."""
+import concurrent.futures
 import copy
+import os
 import random
 import subprocess
 import unittest
@@ -78,6 +80,7 @@ class ParameterFuzzTest(unittest.TestCase):
         rng = random.Random(SEED)
         cases = rospy.get_param("~cases", CASES)
         outcomes = {0: 0, 1: 0}
+        uploaded = []  # (case, name, config), in the seeded order
         for case in range(cases):
             name = "fuzz_%d" % case
             config = mutate(valid, rng)
@@ -86,8 +89,16 @@ class ParameterFuzzTest(unittest.TestCase):
                 rosparam.upload_params("/" + name, config)
             except Exception:  # a value XML-RPC cannot carry: nothing to check
                 continue
-            result = subprocess.run([checker, "__name:=" + name], capture_output=True,
-                                    text=True, timeout=TIMEOUT)
+            uploaded.append((case, name, config))
+
+        def check(name):
+            return subprocess.run([checker, "__name:=" + name], capture_output=True, text=True,
+                                  timeout=TIMEOUT)
+
+        # One check_config per core at a time: each is a process of its own.
+        with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+            results = list(pool.map(check, [name for _, name, _ in uploaded]))
+        for (case, name, config), result in zip(uploaded, results):
             with self.subTest(case=case, config=str(config)[:2000]):
                 self.assertIn(result.returncode, (0, 1), result.stderr[-2000:])
                 if result.returncode == 1:
