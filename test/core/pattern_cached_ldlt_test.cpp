@@ -109,6 +109,7 @@ TEST(PatternCachedLdlt, EntriesAddedDirectlyFactorizeAsListedOnes) {
   for (const Eigen::Triplet<double>& t : entries) {
     ASSERT_TRUE(factorization.addDirect(t.row(), t.col(), t.value()));
   }
+  ASSERT_TRUE(factorization.endDirect());
   ASSERT_TRUE(factorization.factorizeDirect());
   EXPECT_EQ(factorization.analyses(), 1);
   const Eigen::VectorXd rhs = Eigen::VectorXd::LinSpaced(kSize, -1.0, 2.0);
@@ -119,7 +120,7 @@ TEST(PatternCachedLdlt, EntriesAddedDirectlyFactorizeAsListedOnes) {
   EXPECT_FALSE(factorization.addDirect(entries[1].row(), entries[1].col(), 1.0));
   ASSERT_TRUE(factorization.beginDirect(kSize));
   EXPECT_TRUE(factorization.addDirect(entries[0].row(), entries[0].col(), entries[0].value()));
-  EXPECT_FALSE(factorization.factorizeDirect());
+  EXPECT_FALSE(factorization.endDirect());
   EXPECT_FALSE(factorization.beginDirect(kSize + 1));  // another size
 }
 

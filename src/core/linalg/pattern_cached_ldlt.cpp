@@ -181,10 +181,10 @@ bool PatternCachedLdlt::beginDirect(Eigen::Index size) {
   return true;
 }
 
-bool PatternCachedLdlt::factorizeDirect() {
+bool PatternCachedLdlt::endDirect() {
   const bool complete = direct_values_ != nullptr && cursor_ == entry_row_.size();
   direct_values_ = nullptr;
-  return complete && factorizeValues();
+  return complete;
 }
 
 }  // namespace yarn_tearing

@@ -160,7 +160,9 @@ void EdgeGramSolver::solveGeneral(const EdgeSet& edges, const GramSystem& system
       listed = listed && factorization_.addDirect(row, col, value);
     });
   }
-  if (!listed || !factorization_.factorizeDirect()) {
+  if (listed && factorization_.endDirect()) {
+    factorization_.factorizeDirect();
+  } else {
     triplets_.clear();
     list([&](int row, int col, double value) { triplets_.emplace_back(row, col, value); });
     factorization_.factorize(triplets_, size);

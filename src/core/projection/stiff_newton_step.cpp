@@ -41,12 +41,12 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
   };
   // Straight into the last analysed pattern where the entries list as in the last solve (a
   // fabric's rows, taut or idle, list the same entries while the taut set changes); otherwise
-  // (a new layout, sliding friction's LU, a refined solve's matrix) as triplets.
+  // (a new layout, one cut short, sliding friction's LU, a refined solve's matrix) as triplets.
   direct_ = !banded_ && !refine_ &&
             generalFactorization().beginDirect(condensing_ ? condensation_.reducedRows() : rows);
   direct_listed_ = true;
   if (!assemble()) return false;
-  if (direct_ && (!direct_listed_ || unsymmetric_)) {
+  if (direct_ && (!direct_listed_ || !generalFactorization().endDirect() || unsymmetric_)) {
     direct_ = false;
     if (!assemble()) return false;
   }

@@ -52,8 +52,9 @@ class PatternCachedLdlt {
   bool factorize(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size);
 
   /// Starts listing the entries of a size x size matrix straight into the analysed pattern, in
-  /// the (row, column) sequence of the last factorize() (addDirect(), then factorizeDirect()):
-  /// no list is built, sorted or compared. False when there is no such sequence for this size.
+  /// the (row, column) sequence of the last factorize() (addDirect(), endDirect(), then
+  /// factorizeDirect()): no list is built, sorted or compared. False when there is no such
+  /// sequence for this size.
   bool beginDirect(Eigen::Index size);
   /// Adds `value` to the next entry, (row, col), as factorize() would (the lower triangle read,
   /// duplicates summed); false when (row, col) is not the next entry of that sequence (the
@@ -66,9 +67,12 @@ class PatternCachedLdlt {
     if (slot >= 0) direct_values_[slot] += value;
     return true;
   }
-  /// Factorizes the entries added since beginDirect(); false when they were fewer than the
-  /// sequence's or the factorization fails.
-  bool factorizeDirect();
+  /// Whether the entries added since beginDirect() were the whole sequence (not only its start);
+  /// when false, the caller lists the entries for factorize().
+  bool endDirect();
+  /// Factorizes the entries added since beginDirect(), after endDirect() was true; false when
+  /// the factorization fails.
+  bool factorizeDirect() { return factorizeValues(); }
   /// Solves with the last factorization.
   template <typename Rhs>
   Eigen::VectorXd solve(const Rhs& rhs) const {
