@@ -13,6 +13,7 @@ export ROS_HOME="${ROS_HOME:-${ws}/ros_home}"  # rostest logs
 results="${ws}/build/test_results/yarn_tearing"
 rm -rf "${results}"
 "${repo}/tools/build.sh"
+"${repo}/tools/build.sh" tests  # the test programs, on every core
 # One test at a time (-j1): the rate and tracking tests need the CPU they measure.
 "${repo}/tools/build.sh" run_tests_yarn_tearing -j1
 catkin_test_results --verbose "${results}"

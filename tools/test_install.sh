@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Tests yarn_tearing as users of an installed package meet it:
-#   1. builds it in a workspace of its own and `catkin_make install`s it into a temporary prefix
-#      (tests off);
+#   1. `catkin_make install`s it into a temporary prefix from the workspace that tools/build.sh
+#      makes (<repo>/ws or $YARN_TEARING_WS: built there first if need be, its objects reused), then
+#      sets that workspace's install prefix back to its own install/;
 #   2. with nothing but `source <prefix>/setup.bash` in an empty environment: rospack finds the
 #      installed share folder, the messages and headers are there, the demo (node, force_ramp,
 #      demo_supervisor, launch files, configs) runs to both tears and records a bag, plot_bag
@@ -23,6 +24,7 @@ else
   trap 'rm -rf "${work}"' EXIT
 fi
 prefix="${work}/install"
+workspace="${YARN_TEARING_WS:-${repo}/ws}"  # tools/build.sh's
 jobs="$(nproc)"
 
 step() { echo "== test_install: $*"; }
@@ -47,9 +49,13 @@ port="$(free_port)"
 
 step "build and install into ${prefix}"
 rm -rf "${prefix}"
-YARN_TEARING_WS="${work}/ws" "${repo}/tools/build.sh" install -DCMAKE_INSTALL_PREFIX="${prefix}" \
-  -DCATKIN_ENABLE_TESTING=OFF -j"${jobs}" >"${work}/build.log" 2>&1 ||
+# The install prefix is a configure-time setting of catkin (its installed setup files and CMake
+# config name it): configured for the install, and back to the workspace's own afterwards.
+"${repo}/tools/build.sh" install -DCMAKE_INSTALL_PREFIX="${prefix}" -j"${jobs}" \
+  >"${work}/build.log" 2>&1 ||
   { tail -50 "${work}/build.log"; fail "catkin_make install (log: ${work}/build.log)"; }
+"${repo}/tools/build.sh" -DCMAKE_INSTALL_PREFIX="${workspace}/install" >>"${work}/build.log" 2>&1 ||
+  { tail -50 "${work}/build.log"; fail "catkin_make with the workspace's install prefix"; }
 
 step "files of the install space"
 for file in lib/libyarn_tearing_core.so lib/libyarn_tearing_ros.so \
@@ -127,9 +133,6 @@ build_downstream() {
 step "downstream package linking yarn_tearing_core: install space"
 build_downstream install "${prefix}/setup.bash"
 step "downstream package linking yarn_tearing_core: devel space"
-if [[ ! -f "${repo}/ws/devel/setup.bash" ]]; then
-  "${repo}/tools/build.sh" >/dev/null
-fi
-build_downstream devel "${repo}/ws/devel/setup.bash"
+build_downstream devel "${workspace}/devel/setup.bash"
 
 echo "test_install: all checks passed"
