@@ -5,8 +5,11 @@
 //   BM_FabricCornersDrawnApart/16 vs BM_FabricAtRest/16: the node's fabric_draw scene from its
 //     first tear on (the tearing and the torn patch flapping from its corners).
 //   BM_PatchObstacle/K: a 16 x 12 cotton patch hanging from its first row; K = 0 without an
-//     obstacle (the reference), 1 a 3 cm ball pressed 1 mm into its middle from the front (a
-//     solid placed through the patch is refused, deep_overlap_test.cpp).
+//     obstacle (the reference), 1 a 3 cm ball pressed 1 mm into its middle from the front (its
+//     cap, 11 mm across in the patch's plane, pokes through a 12.5 mm cell: the patch hangs
+//     beside it, within the contact margin), 2 the ball pressed 4 mm in (its cap wider than a
+//     cell: the patch drapes over it, held off by its contacts). A solid placed through the
+//     patch is refused (deep_overlap_test.cpp).
 //   BM_DiagonalGrid/8/D: an 8 x 8 cotton grid along rows and columns, top row pinned, 0.1 N down
 //     on each vertex of its bottom row, built as a Scene; D = 1 adds both diagonals of every cell
 //     (more edges than vertices, q > n), D = 0 is the reference without them.
@@ -109,6 +112,10 @@ void BM_PatchObstacle(benchmark::State& state) {
     o.radius = 0.015;
     // Touching the patch's middle from the front, pressed 1 mm in.
     o.pose.translation() = middle + Eigen::Vector3d(0.0, o.radius - 1.0e-3, 0.0);
+  } else if (state.range(0) == 2) {
+    o.shape = ObstacleShape::kSphere;
+    o.radius = 0.015;
+    o.pose.translation() = middle + Eigen::Vector3d(0.0, o.radius - 4.0e-3, 0.0);
   }
   if (state.range(0) != 0) sim.setObstacles({o});
   settle(sim, 0.25);
@@ -161,7 +168,7 @@ void BM_DiagonalGrid(benchmark::State& state) {
 
 BENCHMARK(BM_FabricHeldAtCorners)->Arg(32)->Arg(64)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FabricCornersDrawnApart)->Arg(16)->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(BM_PatchObstacle)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PatchObstacle)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_DiagonalGrid)->Args({8, 0})->Args({8, 1})->Unit(benchmark::kMicrosecond);
 
 }  // namespace

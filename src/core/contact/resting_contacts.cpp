@@ -21,6 +21,11 @@ bool frictionlessVertexContact(const Contact& c) {
   return c.a == c.b && c.friction == 0.0 && c.friction_known && c.active;
 }
 
+/// Whether `c` is a point that the prediction leaves clear of its obstacle (inactive as
+/// detected) and that pushed nothing at the end of the last step (no friction states carried):
+/// a taut wrap's points, which its tension presses in again whatever the prediction, are not.
+bool clearPoint(const Contact& c) { return !c.active && !c.friction_known; }
+
 }  // namespace
 
 void RestingContacts::select(const ContactSet& contacts, const std::vector<double>& inverse_mass,
@@ -59,6 +64,7 @@ void RestingContacts::select(const ContactSet& contacts, const std::vector<doubl
   }
   was_active_.resize(list.size());
   handled_.resize(list.size());
+  bool all_clear = true;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const Contact& c = list[i];
     was_active_[i] = c.active ? 1 : 0;
@@ -69,7 +75,14 @@ void RestingContacts::select(const ContactSet& contacts, const std::vector<doubl
                            held_by_[c.a] == static_cast<std::int32_t>(i))
                       ? 1
                       : 0;
+    all_clear = all_clear && (handled_[i] != 0 || clearPoint(c));
   }
+  // When every other point is clear, none needs a row: each is guessed to stay clear, without
+  // impulse (accept() finds it unpenetrated at the end; zero impulses then satisfy its
+  // complementarity and friction). Where some point needs a row, the clear ones keep theirs
+  // too, as the fast iterations' rows (FastContactRows) or the Newton steps take them.
+  if (!all_clear) return;
+  for (std::size_t i = 0; i < list.size(); ++i) handled_[i] = 1;
 }
 
 void RestingContacts::restore(ContactSet& contacts) const {

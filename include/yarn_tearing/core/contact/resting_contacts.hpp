@@ -25,12 +25,18 @@ namespace yarn_tearing {
 /// lose their component along the normal, i.e. its mobility is w (I - n n^T)) and otherwise
 /// moves freely. Its contact impulse, the normal part of what its momentum balance needs, must
 /// push; it has no friction.
+/// When every contact point but those is one that the prediction leaves clear of its obstacle
+/// and that pushed nothing in the last step (an obstacle beside a patch, within the detection
+/// margin), those are guessed to stay clear: no rows, no impulses, and the guess holds when
+/// none penetrates at the end.
 class RestingContacts {
  public:
   /// Picks the held vertices from `contacts` (detected, not yet linearized) and each one's target
   /// position [m], and with `faces` the vertices kept on frictionless faces; handled() then
-  /// marks the contacts it takes care of: the holding ones, and segment points between two held
-  /// vertices (on a face with them; checked by accept()).
+  /// marks the contacts it takes care of: the holding ones, segment points between two held
+  /// vertices (on a face with them; checked by accept()), and, when every other point is one the
+  /// prediction leaves clear of its obstacle and that pushed nothing in the last step, those
+  /// (guessed to stay clear, without impulse; checked by accept()).
   void select(const ContactSet& contacts, const std::vector<double>& inverse_mass, bool faces);
   /// Some vertex is held or kept on a face.
   bool any() const { return !held_.empty() || !on_face_.empty(); }

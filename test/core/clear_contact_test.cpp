@@ -1,0 +1,65 @@
+// An obstacle within the contact margin of a patch but clear of it: a 3 cm ball pressed 1 mm
+// into the middle of a hanging patch whose cells (12.5 mm) are wider than the ball's cap in the
+// patch's plane (2 sqrt(2 r d) = 11 mm), so it pokes through a hole between the yarns. Its
+// contact points carry nothing, and the patch hangs as it does without the ball (within the
+// constraint tolerance), every step converged.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "fabric_support.hpp"
+
+namespace yarn_tearing::test {
+namespace {
+
+constexpr double kSpacing = 0.0125;  ///< [m] between the patch's yarns
+constexpr double kRadius = 0.015;    ///< the ball's [m]
+constexpr double kDepth = 1.0e-3;    ///< how far the ball reaches past the patch's plane [m]
+
+/// The 16 x 12 cotton patch (12.5 mm between yarns) hanging from its first row, settled 0.2 s.
+Simulator settledPatch() {
+  SimulationParameters parameters;
+  parameters.air_damping = 0.05;
+  Simulator sim(parameters, {}, {cottonPatch(16, 12, 15 * kSpacing, 11 * kSpacing)});
+  while (sim.time() < 0.2) sim.step();
+  return sim;
+}
+
+TEST(ClearContact, ABallThroughAHoleOfThePatchCarriesNothingAndThePatchHangsAsWithout) {
+  Simulator with_ball = settledPatch();
+  Simulator without = settledPatch();
+  const Scene& scene = with_ball.scene();
+  // The middle of the patch is the middle of a cell (ends 7 and 8, picks 5 and 6).
+  const Eigen::Vector3d middle = 0.5 * (scene.vertices.position[scene.fabricVertex(0, 0, 0)] +
+                                        scene.vertices.position[scene.fabricVertex(0, -1, -1)]);
+  Obstacle ball;
+  ball.name = "ball";
+  ball.shape = ObstacleShape::kSphere;
+  ball.radius = kRadius;
+  ball.pose.translation() = middle + Eigen::Vector3d(0.0, kRadius - kDepth, 0.0);
+  with_ball.setObstacles({ball});
+  double largest_difference = 0.0;
+  for (int k = 0; k < 500; ++k) {
+    with_ball.step();
+    without.step();
+    ASSERT_TRUE(with_ball.lastHealth().projection_converged) << "step " << k;
+    ASSERT_FALSE(with_ball.contacts().empty()) << "step " << k;
+    for (const Contact& c : with_ball.contacts().contacts()) {
+      ASSERT_FALSE(c.active) << "step " << k;
+      ASSERT_EQ(c.normal_multiplier, 0.0) << "step " << k;
+      ASSERT_EQ(c.friction_impulse.norm(), 0.0) << "step " << k;
+      ASSERT_GE(c.gap, 0.0) << "step " << k;
+    }
+    EXPECT_EQ(with_ball.contactWrench(0).force.norm(), 0.0) << "step " << k;
+    for (std::size_t v = 0; v < scene.vertices.size(); ++v) {
+      largest_difference =
+          std::max(largest_difference,
+                   (scene.vertices.position[v] - without.scene().vertices.position[v]).norm());
+    }
+  }
+  // Both solve the same steps to the constraint tolerance (relative to a segment's length).
+  EXPECT_LE(largest_difference, with_ball.parameters().constraint_tolerance * kSpacing);
+}
+
+}  // namespace
+}  // namespace yarn_tearing::test
