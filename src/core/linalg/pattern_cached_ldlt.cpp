@@ -5,47 +5,77 @@
 
 namespace yarn_tearing {
 
-bool PatternCachedLdlt::samePattern(const std::vector<Eigen::Triplet<double>>& entries,
-                                    Eigen::Index size) const {
-  if (new_index_.size() != size || entry_row_.size() != entries.size()) return false;
-  for (std::size_t k = 0; k < entries.size(); ++k) {
-    if (entries[k].row() != entry_row_[k] || entries[k].col() != entry_col_[k]) return false;
+std::uint64_t PatternCachedLdlt::sequenceSignature(
+    const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size) {
+  // FNV-1a over the size and each entry's row and column.
+  constexpr std::uint64_t kPrime = 1099511628211ULL;
+  std::uint64_t hash = 14695981039346656037ULL;
+  const auto mix = [&](std::uint64_t value) { hash = (hash ^ value) * kPrime; };
+  mix(static_cast<std::uint64_t>(size));
+  for (const Eigen::Triplet<double>& t : entries) {
+    mix((static_cast<std::uint64_t>(static_cast<std::uint32_t>(t.row())) << 32) |
+        static_cast<std::uint32_t>(t.col()));
   }
+  return hash;
+}
+
+bool PatternCachedLdlt::takeUpKept(const std::vector<Eigen::Triplet<double>>& entries,
+                                   Eigen::Index size, std::uint64_t signature) {
+  const auto same = [&](const std::unique_ptr<Analysis>& a) {
+    if (a->signature != signature || a->new_index.size() != size ||
+        a->entry_row.size() != entries.size()) {
+      return false;
+    }
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+      if (entries[k].row() != a->entry_row[k] || entries[k].col() != a->entry_col[k]) return false;
+    }
+    return true;
+  };
+  const auto found = std::find_if(kept_.begin(), kept_.end(), same);
+  if (found == kept_.end()) return false;
+  std::rotate(kept_.begin(), found, found + 1);
   return true;
 }
 
 bool PatternCachedLdlt::placeEntries(const std::vector<Eigen::Triplet<double>>& entries) {
-  const int* outer = upper_.outerIndexPtr();
-  const int* inner = upper_.innerIndexPtr();
-  slot_.assign(entries.size(), -1);
+  Analysis& a = *kept_.front();
+  const int* outer = a.upper.outerIndexPtr();
+  const int* inner = a.upper.innerIndexPtr();
+  a.slot.assign(entries.size(), -1);
   for (std::size_t k = 0; k < entries.size(); ++k) {
     const Eigen::Triplet<double>& t = entries[k];
     if (t.row() < t.col()) continue;  // the upper triangle is not read
-    const int i = new_index_[t.row()];
-    const int j = new_index_[t.col()];
+    const int i = a.new_index[t.row()];
+    const int j = a.new_index[t.col()];
     const int row = std::min(i, j);
     const int col = std::max(i, j);
     // Row indices within a column are sorted (setFromTriplets).
     const int* end = inner + outer[col + 1];
     const int* found = std::lower_bound(inner + outer[col], end, row);
     if (found == end || *found != row) return false;
-    slot_[k] = static_cast<int>(found - inner);
+    a.slot[k] = static_cast<int>(found - inner);
   }
-  entry_row_.resize(entries.size());
-  entry_col_.resize(entries.size());
+  a.entry_row.resize(entries.size());
+  a.entry_col.resize(entries.size());
   for (std::size_t k = 0; k < entries.size(); ++k) {
-    entry_row_[k] = entries[k].row();
-    entry_col_[k] = entries[k].col();
+    a.entry_row[k] = entries[k].row();
+    a.entry_col[k] = entries[k].col();
   }
   return true;
 }
 
 bool PatternCachedLdlt::analyze(const std::vector<Eigen::Triplet<double>>& entries,
-                                Eigen::Index size) {
+                                Eigen::Index size, std::uint64_t signature) {
   ++analyses_;
-  entry_row_.clear();
-  entry_col_.clear();
-  ordered_ = new_index_.size() != size || reorder_next_;
+  // The last factorized analysis lends its ordering to one of the same size.
+  const bool same_size = !kept_.empty() && kept_.front()->new_index.size() == size;
+  ordered_ = !same_size || reorder_next_;
+  Eigen::VectorXi last_index = ordered_ ? Eigen::VectorXi() : kept_.front()->new_index;
+  // The oldest analysis dropped lends its buffers (a large system's own, analysed anew).
+  std::unique_ptr<Analysis> reused = makeRoom();
+  kept_.insert(kept_.begin(), reused ? std::move(reused) : std::make_unique<Analysis>());
+  Analysis& a = *kept_.front();
+  a.signature = signature;
   if (ordered_) {
     // The ordering Eigen's SimplicialLDLT would choose: AMD on the symmetric matrix of the lower
     // triangle.
@@ -56,42 +86,44 @@ bool PatternCachedLdlt::analyze(const std::vector<Eigen::Triplet<double>>& entri
     Eigen::AMDOrdering<int>()(symmetric, inverse);
     const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation =
         inverse.inverse();
-    new_index_ = permutation.indices();
+    a.new_index = permutation.indices();
     reorder_next_ = false;
+  } else {
+    a.new_index.swap(last_index);
   }
   // The permuted upper triangle's pattern.
   std::vector<Eigen::Triplet<double>> pattern;
   pattern.reserve(entries.size());
   for (const Eigen::Triplet<double>& t : entries) {
     if (t.row() < t.col()) continue;
-    const int i = new_index_[t.row()];
-    const int j = new_index_[t.col()];
+    const int i = a.new_index[t.row()];
+    const int j = a.new_index[t.col()];
     pattern.emplace_back(std::min(i, j), std::max(i, j), 0.0);
   }
-  upper_.resize(size, size);
-  upper_.setFromTriplets(pattern.begin(), pattern.end());
-  upper_.makeCompressed();
-  nonzero_slot_.clear();
-  if (!leave_out_zeros_ && !ldlt_.analyzePattern(upper_)) return false;
+  a.upper.resize(size, size);
+  a.upper.setFromTriplets(pattern.begin(), pattern.end());
+  a.upper.makeCompressed();
+  if (!leave_out_zeros_ && !a.ldlt.analyzePattern(a.upper)) return false;
   return placeEntries(entries);
 }
 
 PatternCachedLdlt::NonzeroFit PatternCachedLdlt::nonzerosFitAnalysed() const {
-  if (nonzero_slot_.size() != static_cast<std::size_t>(upper_.nonZeros()) ||
-      nonzero_.rows() != upper_.rows()) {
+  const Analysis& a = *kept_.front();
+  if (a.nonzero_slot.size() != static_cast<std::size_t>(a.upper.nonZeros()) ||
+      a.nonzero.rows() != a.upper.rows()) {
     return NonzeroFit::kNew;
   }
-  const double* values = upper_.valuePtr();
+  const double* values = a.upper.valuePtr();
   Eigen::Index zeros = 0;
   bool outside = false;
-  for (std::size_t k = 0; k < nonzero_slot_.size(); ++k) {
-    if (nonzero_slot_[k] < 0) {
+  for (std::size_t k = 0; k < a.nonzero_slot.size(); ++k) {
+    if (a.nonzero_slot[k] < 0) {
       outside = outside || values[k] != 0.0;
     } else if (values[k] == 0.0) {
       ++zeros;
     }
   }
-  if (static_cast<double>(zeros) > kMostZeroShare * static_cast<double>(nonzero_.nonZeros())) {
+  if (static_cast<double>(zeros) > kMostZeroShare * static_cast<double>(a.nonzero.nonZeros())) {
     return NonzeroFit::kNew;
   }
   return outside ? NonzeroFit::kGrow : NonzeroFit::kFits;
@@ -99,51 +131,54 @@ PatternCachedLdlt::NonzeroFit PatternCachedLdlt::nonzerosFitAnalysed() const {
 
 bool PatternCachedLdlt::analyzeNonzeros(bool grow) {
   ++zero_free_analyses_;
-  const Eigen::Index size = upper_.rows();
-  const int* outer = upper_.outerIndexPtr();
-  const int* inner = upper_.innerIndexPtr();
-  const double* values = upper_.valuePtr();
+  Analysis& a = *kept_.front();
+  const Eigen::Index size = a.upper.rows();
+  const int* outer = a.upper.outerIndexPtr();
+  const int* inner = a.upper.innerIndexPtr();
+  const double* values = a.upper.valuePtr();
   // Grown, the pattern keeps what it held: entries that come and go (a slack edge that turns
   // taut now and then) then stay in it instead of bringing an analysis each time they return.
-  if (!grow) nonzero_slot_.assign(static_cast<std::size_t>(upper_.nonZeros()), -1);
+  if (!grow) a.nonzero_slot.assign(static_cast<std::size_t>(a.upper.nonZeros()), -1);
   int kept = 0;
   for (Eigen::Index j = 0; j < size; ++j) {
     for (int k = outer[j]; k < outer[j + 1]; ++k) {
-      const bool held = grow && nonzero_slot_[k] >= 0;
-      nonzero_slot_[k] = values[k] != 0.0 || inner[k] == j || held ? kept++ : -1;
+      const bool held = grow && a.nonzero_slot[k] >= 0;
+      a.nonzero_slot[k] = values[k] != 0.0 || inner[k] == j || held ? kept++ : -1;
     }
   }
-  // Columns of upper_ are sorted, so are the kept entries: the arrays are filled directly.
-  nonzero_.resize(size, size);
-  nonzero_.resizeNonZeros(kept);
-  int* nonzero_outer = nonzero_.outerIndexPtr();
-  int* nonzero_inner = nonzero_.innerIndexPtr();
+  // Columns of upper are sorted, so are the kept entries: the arrays are filled directly.
+  a.nonzero.resize(size, size);
+  a.nonzero.resizeNonZeros(kept);
+  int* nonzero_outer = a.nonzero.outerIndexPtr();
+  int* nonzero_inner = a.nonzero.innerIndexPtr();
   nonzero_outer[0] = 0;
   for (Eigen::Index j = 0; j < size; ++j) {
     int next = nonzero_outer[j];
     for (int k = outer[j]; k < outer[j + 1]; ++k) {
-      if (nonzero_slot_[k] >= 0) nonzero_inner[next++] = inner[k];
+      if (a.nonzero_slot[k] >= 0) nonzero_inner[next++] = inner[k];
     }
     nonzero_outer[j + 1] = next;
   }
-  return ldlt_.analyzePattern(nonzero_);
+  return a.ldlt.analyzePattern(a.nonzero);
 }
 
 bool PatternCachedLdlt::factorizeValues() {
-  if (!leave_out_zeros_) return ldlt_.factorize(upper_);
+  Analysis& a = *kept_.front();
+  if (!leave_out_zeros_) return a.ldlt.factorize(a.upper);
   const NonzeroFit fit = nonzerosFitAnalysed();
   if (fit != NonzeroFit::kFits && !analyzeNonzeros(fit == NonzeroFit::kGrow)) return false;
-  const double* values = upper_.valuePtr();
-  double* kept = nonzero_.valuePtr();
-  for (std::size_t k = 0; k < nonzero_slot_.size(); ++k) {
-    if (nonzero_slot_[k] >= 0) kept[nonzero_slot_[k]] = values[k];
+  const double* values = a.upper.valuePtr();
+  double* kept = a.nonzero.valuePtr();
+  for (std::size_t k = 0; k < a.nonzero_slot.size(); ++k) {
+    if (a.nonzero_slot[k] >= 0) kept[a.nonzero_slot[k]] = values[k];
   }
-  return ldlt_.factorize(nonzero_);
+  return a.ldlt.factorize(a.nonzero);
 }
 
 void PatternCachedLdlt::watchFill(bool analysed) {
   if (!analysed) return;
-  const Eigen::SparseMatrix<double>& factorized = leave_out_zeros_ ? nonzero_ : upper_;
+  const Analysis& a = *kept_.front();
+  const Eigen::SparseMatrix<double>& factorized = leave_out_zeros_ ? a.nonzero : a.upper;
   const double fill =
       static_cast<double>(factorNonZeros()) / static_cast<double>(factorized.nonZeros());
   if (ordered_) {
@@ -156,33 +191,52 @@ void PatternCachedLdlt::watchFill(bool analysed) {
 bool PatternCachedLdlt::factorize(const std::vector<Eigen::Triplet<double>>& entries,
                                   Eigen::Index size) {
   direct_values_ = nullptr;
-  const bool analysed = !samePattern(entries, size);
-  if (analysed && !analyze(entries, size)) {
-    entry_row_.clear();
-    entry_col_.clear();
+  const std::uint64_t signature = sequenceSignature(entries, size);
+  const bool analysed = !takeUpKept(entries, size, signature);
+  if (analysed && !analyze(entries, size, signature)) {
+    kept_.erase(kept_.begin());  // no sequence to take up or add to directly
     return false;
   }
-  double* values = upper_.valuePtr();
-  std::fill(values, values + upper_.nonZeros(), 0.0);
+  Analysis& a = *kept_.front();
+  double* values = a.upper.valuePtr();
+  std::fill(values, values + a.upper.nonZeros(), 0.0);
   for (std::size_t k = 0; k < entries.size(); ++k) {
-    if (slot_[k] >= 0) values[slot_[k]] += entries[k].value();
+    if (a.slot[k] >= 0) values[a.slot[k]] += entries[k].value();
   }
   if (!factorizeValues()) return false;
   watchFill(analysed);
   return true;
 }
 
+std::unique_ptr<PatternCachedLdlt::Analysis> PatternCachedLdlt::makeRoom() {
+  Eigen::Index entries = 0;
+  std::size_t keep = 0;
+  for (; keep < kept_.size() && keep + 1 < most_kept_; ++keep) {
+    const Analysis& a = *kept_[keep];
+    entries += a.upper.nonZeros() + a.nonzero.nonZeros() + a.ldlt.factorNonZeros();
+    if (entries > kKeptEntries) break;
+  }
+  std::unique_ptr<Analysis> dropped;
+  if (keep < kept_.size()) dropped = std::move(kept_[keep]);
+  kept_.resize(keep);
+  return dropped;
+}
+
 bool PatternCachedLdlt::beginDirect(Eigen::Index size) {
   direct_values_ = nullptr;
-  if (new_index_.size() != size || entry_row_.empty()) return false;
+  if (kept_.empty() || kept_.front()->new_index.size() != size ||
+      kept_.front()->entry_row.empty()) {
+    return false;
+  }
   cursor_ = 0;
-  direct_values_ = upper_.valuePtr();
-  std::fill(direct_values_, direct_values_ + upper_.nonZeros(), 0.0);
+  Analysis& a = *kept_.front();
+  direct_values_ = a.upper.valuePtr();
+  std::fill(direct_values_, direct_values_ + a.upper.nonZeros(), 0.0);
   return true;
 }
 
 bool PatternCachedLdlt::endDirect() {
-  const bool complete = direct_values_ != nullptr && cursor_ == entry_row_.size();
+  const bool complete = direct_values_ != nullptr && cursor_ == kept_.front()->entry_row.size();
   direct_values_ = nullptr;
   return complete;
 }

@@ -19,6 +19,7 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
   dense_band_ = banded_ && contacts == nullptr;
   inverse_mass_ = &inverse_mass;
   condensing_ = false;
+  with_contacts_ = contacts != nullptr;
   if (!banded_ && contacts == nullptr && start_.direction != nullptr && !force_full_) {
     chooseCondensation(edges, incidence, inverse_mass, rows);
   } else {
@@ -281,7 +282,7 @@ bool StiffNewtonStep::solveAssembled(const Eigen::VectorXd& rhs, Eigen::VectorXd
     condensation_.expand(rhs, reduced_solution_, *inverse_mass_, edge_direction_, result);
     return result.allFinite();
   }
-  result = general_factorization_.solve(rhs);
+  result = generalFactorization().solve(rhs);
   return result.allFinite();
 }
 

@@ -2,6 +2,9 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <algorithm>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "yarn_tearing/core/linalg/sparse_ldlt.hpp"
@@ -17,7 +20,13 @@ namespace yarn_tearing {
 /// factorization). An entry outside it brings a new analysis, which keeps the last ordering
 /// (a set of taut edges that changes a little from step to step, as a hanging fabric's slack
 /// weft does, hardly changes the fill) until the factor's fill per matrix entry has grown by
-/// kMostFillGrowth since the last AMD ordering; a new size always reorders.
+/// kMostFillGrowth since the last AMD ordering; a new size always reorders. With
+/// keepAnalyses(n), the last n analyses are kept (within kKeptEntries), each with its own
+/// factorization, and a matrix listing the same (row, column) sequence as one of them takes it
+/// up again: a Newton step with contact rows whose pivoting passes go through the same few
+/// systems every step (a patch draped over a ball: four sizes a step) analyses each once, not
+/// once a pass. (Kept for every system, they slowed tearing fabrics, whose patterns seldom
+/// return, by 10-40 % in side-by-side runs.)
 ///
 /// With leaveOutZeros(), entries whose value is exactly zero (and that are not on the diagonal)
 /// are left out of the factorization: the listed pattern still fixes the ordering and the
@@ -33,20 +42,20 @@ namespace yarn_tearing {
 class PatternCachedLdlt {
  public:
   PatternCachedLdlt() = default;
-  PatternCachedLdlt(const PatternCachedLdlt& other) : leave_out_zeros_(other.leave_out_zeros_) {}
+  PatternCachedLdlt(const PatternCachedLdlt& other)
+      : leave_out_zeros_(other.leave_out_zeros_), most_kept_(other.most_kept_) {}
   PatternCachedLdlt& operator=(const PatternCachedLdlt& other) {
     leave_out_zeros_ = other.leave_out_zeros_;
-    entry_row_.clear();
-    entry_col_.clear();
+    most_kept_ = other.most_kept_;
+    kept_.clear();
     direct_values_ = nullptr;
-    new_index_.resize(0);
-    upper_.resize(0, 0);
-    nonzero_.resize(0, 0);
     return *this;
   }
 
   /// From now on, leaves entries that are exactly zero out of the factorization (see above).
   void leaveOutZeros() { leave_out_zeros_ = true; }
+  /// Keeps the last `most` analyses (at least 1, the default) to be taken up again (see above).
+  void keepAnalyses(std::size_t most) { most_kept_ = std::max<std::size_t>(most, 1); }
 
   /// Factorizes the size x size matrix of `entries`; false when the factorization fails.
   bool factorize(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size);
@@ -60,10 +69,12 @@ class PatternCachedLdlt {
   /// duplicates summed); false when (row, col) is not the next entry of that sequence (the
   /// caller then lists the entries for factorize()).
   bool addDirect(int row, int col, double value) {
-    if (cursor_ >= entry_row_.size() || entry_row_[cursor_] != row || entry_col_[cursor_] != col) {
+    const Analysis& a = *kept_.front();
+    if (cursor_ >= a.entry_row.size() || a.entry_row[cursor_] != row ||
+        a.entry_col[cursor_] != col) {
       return false;
     }
-    const int slot = slot_[cursor_++];
+    const int slot = a.slot[cursor_++];
     if (slot >= 0) direct_values_[slot] += value;
     return true;
   }
@@ -76,12 +87,13 @@ class PatternCachedLdlt {
   /// Solves with the last factorization.
   template <typename Rhs>
   Eigen::VectorXd solve(const Rhs& rhs) const {
-    const Eigen::Index size = new_index_.size();
+    const Analysis& a = *kept_.front();
+    const Eigen::Index size = a.new_index.size();
     permuted_.resize(size);
-    for (Eigen::Index i = 0; i < size; ++i) permuted_[new_index_[i]] = rhs[i];
-    ldlt_.solveInPlace(permuted_);
+    for (Eigen::Index i = 0; i < size; ++i) permuted_[a.new_index[i]] = rhs[i];
+    a.ldlt.solveInPlace(permuted_);
     Eigen::VectorXd result(size);
-    for (Eigen::Index i = 0; i < size; ++i) result[i] = permuted_[new_index_[i]];
+    for (Eigen::Index i = 0; i < size; ++i) result[i] = permuted_[a.new_index[i]];
     return result;
   }
   /// Symbolic analyses so far [-] (for tests and benchmarks).
@@ -89,28 +101,53 @@ class PatternCachedLdlt {
   /// Analyses of the nonzero entries' pattern so far (leaveOutZeros()) [-].
   long zeroFreeAnalyses() const { return zero_free_analyses_; }
   /// Nonzeros of the last factor's L [-] (for tests and benchmarks).
-  Eigen::Index factorNonZeros() const { return ldlt_.factorNonZeros(); }
+  Eigen::Index factorNonZeros() const {
+    return kept_.empty() ? 0 : kept_.front()->ldlt.factorNonZeros();
+  }
 
  private:
-  /// Orders, builds the permuted upper triangle's pattern and each entry's slot in it.
-  bool analyze(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size);
-  /// Finds each entry's slot in the analysed pattern and keeps the sequence; false when one is
-  /// not in it.
-  bool placeEntries(const std::vector<Eigen::Triplet<double>>& entries);
-  /// Whether `entries` has the (row, column) sequence last placed.
-  bool samePattern(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size) const;
+  /// One symbolic analysis with the factorization of its pattern.
+  struct Analysis {
+    std::uint64_t signature = 0;  ///< sequenceSignature() of its (row, column) sequence
+    std::vector<int> entry_row;   ///< row of each entry of the sequence
+    std::vector<int> entry_col;   ///< column of each entry of the sequence
+    /// Per entry: its index in upper's values, -1 for an entry of the upper triangle (not read).
+    std::vector<int> slot;
+    Eigen::VectorXi new_index;  ///< row i of the matrix is row new_index[i] of the permuted one
+    Eigen::SparseMatrix<double> upper;  ///< upper triangle of P A P^T
+    /// With leaveOutZeros(): upper without its zero entries off the diagonal, as last analysed.
+    Eigen::SparseMatrix<double> nonzero;
+    /// Per value of upper: its index in nonzero's values, -1 when left out.
+    std::vector<int> nonzero_slot;
+    SparseLdlt ldlt;
+  };
 
-  /// How upper_'s values fit nonzero_'s analysed pattern.
+  /// A hash of the size and the (row, column) sequence of `entries`.
+  static std::uint64_t sequenceSignature(const std::vector<Eigen::Triplet<double>>& entries,
+                                         Eigen::Index size);
+  /// Moves the kept analysis whose sequence `entries` lists (`signature` its
+  /// sequenceSignature()) to the front of kept_; false when none does.
+  bool takeUpKept(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size,
+                  std::uint64_t signature);
+  /// Puts a new analysis of `entries` at the front of kept_ (the oldest dropped beyond
+  /// kKeptAnalyses): orders, builds the permuted upper triangle's pattern and each entry's slot.
+  bool analyze(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size,
+               std::uint64_t signature);
+  /// Finds each entry's slot in the front analysis's pattern and keeps the sequence; false when
+  /// one is not in it.
+  bool placeEntries(const std::vector<Eigen::Triplet<double>>& entries);
+
+  /// How the front analysis's upper values fit its analysed nonzero pattern.
   enum class NonzeroFit {
     kFits,  ///< every nonzero value within it, at most kMostZeroShare of its entries zero now
     kGrow,  ///< a nonzero value outside it, the share of zeros within bounds
     kNew,   ///< more zeros than kMostZeroShare, or no analysis of this pattern
   };
   NonzeroFit nonzerosFitAnalysed() const;
-  /// Builds nonzero_ from upper_'s nonzero values and diagonal, with `grow` also from the
-  /// entries it held, and analyses it.
+  /// Builds the front analysis's nonzero pattern from its upper values and diagonal, with
+  /// `grow` also from the entries it held, and analyses it.
   bool analyzeNonzeros(bool grow);
-  /// Factorizes upper_, or with leaveOutZeros() its nonzero entries (nonzero_).
+  /// Factorizes the front analysis's upper, or with leaveOutZeros() its nonzero entries.
   bool factorizeValues();
 
   /// After factorizing a new analysis: its fill per matrix entry, or whether it has grown past
@@ -123,26 +160,25 @@ class PatternCachedLdlt {
   /// Share of the entries of the analysed nonzero pattern that may be zero before it is analysed
   /// anew (leaveOutZeros()) [-].
   static constexpr double kMostZeroShare = 0.3;
+  /// Most stored entries (patterns and factors) of the analyses kept beside the one in use [-]
+  /// (about 6 MB): a large system keeps only the one in use.
+  static constexpr Eigen::Index kKeptEntries = 500000;
+  /// Before a new analysis: keeps the newest analyses, fewer than most_kept_ and within
+  /// kKeptEntries, and drops the others; returns the newest dropped one (null if none), whose
+  /// buffers the new analysis reuses.
+  std::unique_ptr<Analysis> makeRoom();
   bool leave_out_zeros_ = false;  ///< see leaveOutZeros()
+  std::size_t most_kept_ = 1;     ///< see keepAnalyses()
   bool ordered_ = false;          ///< the last analysis computed its ordering
   bool reorder_next_ = true;      ///< the next analysis computes a new ordering
   double ordered_fill_ = 0.0;     ///< factor nonzeros per matrix nonzero at the last ordering [-]
-  std::vector<int> entry_row_;    ///< row of each entry last placed
-  std::vector<int> entry_col_;    ///< column of each entry last placed
-  /// Per entry: its index in upper_'s values, -1 for an entry of the upper triangle (not read).
-  std::vector<int> slot_;
+  /// The kept analyses, the last factorized first.
+  std::vector<std::unique_ptr<Analysis>> kept_;
   std::size_t cursor_ = 0;           ///< the next entry addDirect() expects
-  double* direct_values_ = nullptr;  ///< upper_'s values while entries are added directly
-  Eigen::VectorXi new_index_;  ///< row i of the matrix is row new_index_[i] of the permuted one
-  Eigen::SparseMatrix<double> upper_;  ///< upper triangle of P A P^T
-  /// With leaveOutZeros(): upper_ without its zero entries off the diagonal, as last analysed.
-  Eigen::SparseMatrix<double> nonzero_;
-  /// Per value of upper_: its index in nonzero_'s values, -1 when left out.
-  std::vector<int> nonzero_slot_;
+  double* direct_values_ = nullptr;  ///< the front's upper values while entries are added directly
   long zero_free_analyses_ = 0;
   mutable Eigen::VectorXd permuted_;  ///< a right-hand side in the permuted order
   long analyses_ = 0;
-  SparseLdlt ldlt_;
 };
 
 }  // namespace yarn_tearing

@@ -151,7 +151,8 @@ class StiffNewtonStep {
   }
   /// The general path's factorization of this solve: the condensed or the full system's.
   PatternCachedLdlt& generalFactorization() {
-    return condensing_ ? condensed_factorization_ : general_factorization_;
+    if (condensing_) return condensed_factorization_;
+    return with_contacts_ ? contact_factorization_ : general_factorization_;
   }
   /// Adds a 3 x 3 block at (row, col) (addEntry).
   void addBlock(int row, int col, const Eigen::Matrix3d& block);
@@ -263,6 +264,18 @@ class StiffNewtonStep {
   /// The same for condensed systems: a condensed and a full system keep their analyses side by
   /// side.
   PatternCachedLdlt condensed_factorization_;
+  /// The same for systems with contact rows, which keeps the analyses of the few systems a
+  /// step's pivoting passes go through (PatternCachedLdlt::keepAnalyses).
+  PatternCachedLdlt contact_factorization_ = keptAnalyses(kContactAnalyses);
+  /// Analyses contact_factorization_ keeps [-].
+  static constexpr std::size_t kContactAnalyses = 8;
+  /// A PatternCachedLdlt that keeps `most` analyses.
+  static PatternCachedLdlt keptAnalyses(std::size_t most) {
+    PatternCachedLdlt factorization;
+    factorization.keepAnalyses(most);
+    return factorization;
+  }
+  bool with_contacts_ = false;   ///< this solve's system has contact rows
   double impulse_change_ = 0.0;  ///< see impulseChange()
   bool refine_ = false;          ///< see refineSolves()
   int newton_steps_ = 0;         ///< Newton steps since beginProjection() [-]
