@@ -25,8 +25,8 @@ namespace yarn_tearing {
 /// factorization, and a matrix listing the same (row, column) sequence as one of them takes it
 /// up again: a Newton step with contact rows whose pivoting passes go through the same few
 /// systems every step (a patch draped over a ball: four sizes a step) analyses each once, not
-/// once a pass. (Kept for every system, they slowed tearing fabrics, whose patterns seldom
-/// return, by 10-40 % in side-by-side runs.)
+/// once a pass. Other systems keep one: a tearing fabric's patterns seldom return, and keeping
+/// its analyses costs it 10-40 % (side by side).
 ///
 /// With leaveOutZeros(), entries whose value is exactly zero (and that are not on the diagonal)
 /// are left out of the factorization: the listed pattern still fixes the ordering and the
