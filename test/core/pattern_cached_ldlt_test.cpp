@@ -1,7 +1,7 @@
 // PatternCachedLdlt leaving stored zeros out of the factorization (leaveOutZeros()): the same
 // solution as with them, a factor without their fill, and a new analysis only when a nonzero
 // falls outside the analysed one; entries added straight into the analysed pattern factorize as
-// the same entries listed.
+// the same entries listed; with keepAnalyses(), a pattern that returns is not analysed again.
 #include "yarn_tearing/core/linalg/pattern_cached_ldlt.hpp"
 
 #include <gtest/gtest.h>
@@ -15,13 +15,16 @@ namespace {
 /// each), each pair of neighbours joined by an edge row (gradient -1, +1, compliance 1e-3).
 /// Edge rows with `idle` set list the same entries with zero couplings and -1 on the diagonal,
 /// as the idle rows of slack edges do.
-std::vector<Eigen::Triplet<double>> ringSystem(int n, const std::vector<bool>& idle) {
+/// With `stride` > 1, edge e joins vertex e to vertex e + stride instead (as many entries,
+/// another pattern).
+std::vector<Eigen::Triplet<double>> ringSystem(int n, const std::vector<bool>& idle,
+                                               int stride = 1) {
   std::vector<Eigen::Triplet<double>> entries;
   for (int v = 0; v < n; ++v) entries.emplace_back(v, v, 1.0 + 0.1 * v);
   for (int e = 0; e < n; ++e) {
     const int row = n + e;
     const int a = e;
-    const int b = (e + 1) % n;
+    const int b = (e + stride) % n;
     const double coupling = idle[e] ? 0.0 : 1.0;
     entries.emplace_back(row, a, -coupling);
     entries.emplace_back(a, row, -coupling);
@@ -122,6 +125,35 @@ TEST(PatternCachedLdlt, EntriesAddedDirectlyFactorizeAsListedOnes) {
   EXPECT_TRUE(factorization.addDirect(entries[0].row(), entries[0].col(), entries[0].value()));
   EXPECT_FALSE(factorization.endDirect());
   EXPECT_FALSE(factorization.beginDirect(kSize + 1));  // another size
+}
+
+TEST(PatternCachedLdlt, KeptAnalysesAreTakenUpAgainAndEachSolvesItsOwnSystem) {
+  constexpr int kVertices = 30;
+  constexpr int kSize = 2 * kVertices;
+  std::vector<bool> idle(kVertices, false);
+  idle[3] = true;
+  // Two systems of the same size and entry count but other patterns, as a Newton step's
+  // pivoting passes alternate; both leave stored zeros out.
+  const std::vector<Eigen::Triplet<double>> first = ringSystem(kVertices, idle);
+  const std::vector<Eigen::Triplet<double>> second = ringSystem(kVertices, idle, 2);
+  const Eigen::VectorXd rhs = Eigen::VectorXd::LinSpaced(kSize, -1.0, 2.0);
+  const Eigen::VectorXd first_solution = denseSolve(first, kSize, rhs);
+  const Eigen::VectorXd second_solution = denseSolve(second, kSize, rhs);
+  PatternCachedLdlt one;  // keeps its last analysis only
+  PatternCachedLdlt two;
+  two.keepAnalyses(2);
+  for (PatternCachedLdlt* factorization : {&one, &two}) {
+    factorization->leaveOutZeros();
+    for (int pass = 0; pass < 3; ++pass) {
+      ASSERT_TRUE(factorization->factorize(first, kSize));
+      EXPECT_LT((factorization->solve(rhs) - first_solution).norm(), 1e-12 * first_solution.norm());
+      ASSERT_TRUE(factorization->factorize(second, kSize));
+      EXPECT_LT((factorization->solve(rhs) - second_solution).norm(),
+                1e-12 * second_solution.norm());
+    }
+  }
+  EXPECT_EQ(one.analyses(), 6);
+  EXPECT_EQ(two.analyses(), 2);
 }
 
 }  // namespace

@@ -71,11 +71,13 @@ bool PatternCachedLdlt::analyze(const std::vector<Eigen::Triplet<double>>& entri
   const bool same_size = !kept_.empty() && kept_.front()->new_index.size() == size;
   ordered_ = !same_size || reorder_next_;
   Eigen::VectorXi last_index = ordered_ ? Eigen::VectorXi() : kept_.front()->new_index;
-  // The oldest analysis dropped lends its buffers (a large system's own, analysed anew).
+  // The newest analysis dropped lends its buffers (a large system's own, analysed anew); its
+  // nonzero pattern is forgotten, so that the first factorization analyses this one's.
   std::unique_ptr<Analysis> reused = makeRoom();
   kept_.insert(kept_.begin(), reused ? std::move(reused) : std::make_unique<Analysis>());
   Analysis& a = *kept_.front();
   a.signature = signature;
+  a.nonzero_slot.clear();
   if (ordered_) {
     // The ordering Eigen's SimplicialLDLT would choose: AMD on the symmetric matrix of the lower
     // triangle.

@@ -129,8 +129,8 @@ class PatternCachedLdlt {
   /// sequenceSignature()) to the front of kept_; false when none does.
   bool takeUpKept(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size,
                   std::uint64_t signature);
-  /// Puts a new analysis of `entries` at the front of kept_ (the oldest dropped beyond
-  /// kKeptAnalyses): orders, builds the permuted upper triangle's pattern and each entry's slot.
+  /// Puts a new analysis of `entries` at the front of kept_ (makeRoom() drops the oldest beyond
+  /// most_kept_): orders, builds the permuted upper triangle's pattern and each entry's slot.
   bool analyze(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size,
                std::uint64_t signature);
   /// Finds each entry's slot in the front analysis's pattern and keeps the sequence; false when
