@@ -12,32 +12,16 @@
 namespace yarn_tearing::test {
 namespace {
 
-constexpr double kSpacing = 0.0125;  ///< [m] between the patch's yarns
-constexpr double kRadius = 0.015;    ///< the ball's [m]
-constexpr double kDepth = 1.0e-3;    ///< how far the ball reaches past the patch's plane [m]
-
-/// The 16 x 12 cotton patch (12.5 mm between yarns) hanging from its first row, settled 0.2 s.
-Simulator settledPatch() {
-  SimulationParameters parameters;
-  parameters.air_damping = 0.05;
-  Simulator sim(parameters, {}, {cottonPatch(16, 12, 15 * kSpacing, 11 * kSpacing)});
-  while (sim.time() < 0.2) sim.step();
-  return sim;
-}
+constexpr double kRadius = 0.015;  ///< the ball's [m]
+constexpr double kDepth = 1.0e-3;  ///< how far the ball reaches past the patch's plane [m]
 
 TEST(ClearContact, ABallThroughAHoleOfThePatchCarriesNothingAndThePatchHangsAsWithout) {
   Simulator with_ball = settledPatch();
   Simulator without = settledPatch();
   const Scene& scene = with_ball.scene();
   // The middle of the patch is the middle of a cell (ends 7 and 8, picks 5 and 6).
-  const Eigen::Vector3d middle = 0.5 * (scene.vertices.position[scene.fabricVertex(0, 0, 0)] +
-                                        scene.vertices.position[scene.fabricVertex(0, -1, -1)]);
-  Obstacle ball;
-  ball.name = "ball";
-  ball.shape = ObstacleShape::kSphere;
-  ball.radius = kRadius;
-  ball.pose.translation() = middle + Eigen::Vector3d(0.0, kRadius - kDepth, 0.0);
-  with_ball.setObstacles({ball});
+  with_ball.setObstacles(
+      {ball(patchMiddle(scene) + Eigen::Vector3d(0.0, kRadius - kDepth, 0.0), kRadius)});
   double largest_difference = 0.0;
   for (int k = 0; k < 500; ++k) {
     with_ball.step();
@@ -58,7 +42,7 @@ TEST(ClearContact, ABallThroughAHoleOfThePatchCarriesNothingAndThePatchHangsAsWi
     }
   }
   // Both solve the same steps to the constraint tolerance (relative to a segment's length).
-  EXPECT_LE(largest_difference, with_ball.parameters().constraint_tolerance * kSpacing);
+  EXPECT_LE(largest_difference, with_ball.parameters().constraint_tolerance * kPatchSpacing);
 }
 
 }  // namespace

@@ -14,31 +14,6 @@
 namespace yarn_tearing::test {
 namespace {
 
-constexpr double kSpacing = 0.0125;  ///< [m] between the patch's yarns
-
-/// The 16 x 12 cotton patch (12.5 mm between yarns) hanging from its first row, settled 0.2 s.
-Simulator settledPatch() {
-  SimulationParameters parameters;
-  parameters.air_damping = 0.05;
-  Simulator sim(parameters, {}, {cottonPatch(16, 12, 15 * kSpacing, 11 * kSpacing)});
-  while (sim.time() < 0.2) sim.step();
-  return sim;
-}
-
-Eigen::Vector3d patchMiddle(const Scene& scene) {
-  return 0.5 * (scene.vertices.position[scene.fabricVertex(0, 0, 0)] +
-                scene.vertices.position[scene.fabricVertex(0, -1, -1)]);
-}
-
-Obstacle ball(const Eigen::Vector3d& center, double radius) {
-  Obstacle o;
-  o.name = "ball";
-  o.shape = ObstacleShape::kSphere;
-  o.radius = radius;
-  o.pose.translation() = center;
-  return o;
-}
-
 /// The deepest any free vertex lies inside `obstacle`, the yarn radius included [m].
 double deepestFreeVertex(const Simulator& sim, const Obstacle& obstacle) {
   const Scene& scene = sim.scene();

@@ -26,6 +26,36 @@ inline FabricSpec cottonPatch(int ends, int picks, double weft_length, double wa
   return spec;
 }
 
+/// Spacing [m] between the yarns of settledPatch().
+constexpr double kPatchSpacing = 0.0125;
+
+/// The 16 x 12 cotton patch (kPatchSpacing between yarns) hanging from its first row, air
+/// damping 0.05, settled 0.2 s.
+inline Simulator settledPatch() {
+  SimulationParameters parameters;
+  parameters.air_damping = 0.05;
+  Simulator sim(parameters, {}, {cottonPatch(16, 12, 15 * kPatchSpacing, 11 * kPatchSpacing)});
+  while (sim.time() < 0.2) sim.step();
+  return sim;
+}
+
+/// The middle of the scene's first fabric, between its first and last vertex [m]: the middle of a
+/// cell when both counts of yarns are even.
+inline Eigen::Vector3d patchMiddle(const Scene& scene) {
+  return 0.5 * (scene.vertices.position[scene.fabricVertex(0, 0, 0)] +
+                scene.vertices.position[scene.fabricVertex(0, -1, -1)]);
+}
+
+/// A ball named "ball" of `radius` [m] at `center` [m].
+inline Obstacle ball(const Eigen::Vector3d& center, double radius) {
+  Obstacle o;
+  o.name = "ball";
+  o.shape = ObstacleShape::kSphere;
+  o.radius = radius;
+  o.pose.translation() = center;
+  return o;
+}
+
 /// Global vertex ids of the scene's first fabric's last row (a strip's grips).
 inline std::vector<std::uint32_t> lastRow(const Scene& scene) {
   const Fabric& fabric = scene.fabrics[0];
