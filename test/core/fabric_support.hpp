@@ -30,10 +30,11 @@ inline FabricSpec cottonPatch(int ends, int picks, double weft_length, double wa
 constexpr double kPatchSpacing = 0.0125;
 
 /// The 16 x 12 cotton patch (kPatchSpacing between yarns) hanging from its first row, air
-/// damping 0.05, settled 0.2 s.
-inline Simulator settledPatch() {
+/// damping 0.05, settled 0.2 s at steps of `time_step` [s].
+inline Simulator settledPatch(double time_step = SimulationParameters{}.time_step) {
   SimulationParameters parameters;
   parameters.air_damping = 0.05;
+  parameters.time_step = time_step;
   Simulator sim(parameters, {}, {cottonPatch(16, 12, 15 * kPatchSpacing, 11 * kPatchSpacing)});
   while (sim.time() < 0.2) sim.step();
   return sim;
