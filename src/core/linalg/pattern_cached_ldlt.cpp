@@ -193,7 +193,10 @@ void PatternCachedLdlt::watchFill(bool analysed) {
 bool PatternCachedLdlt::factorize(const std::vector<Eigen::Triplet<double>>& entries,
                                   Eigen::Index size) {
   direct_values_ = nullptr;
-  const std::uint64_t signature = sequenceSignature(entries, size);
+  direct_count_ = 0;
+  // With one analysis kept the sequence is compared with it directly, stopping at the first
+  // difference; the signature screens several.
+  const std::uint64_t signature = most_kept_ > 1 ? sequenceSignature(entries, size) : 0;
   const bool analysed = !takeUpKept(entries, size, signature);
   if (analysed && !analyze(entries, size, signature)) {
     kept_.erase(kept_.begin());  // no sequence to take up or add to directly
@@ -226,20 +229,26 @@ std::unique_ptr<PatternCachedLdlt::Analysis> PatternCachedLdlt::makeRoom() {
 
 bool PatternCachedLdlt::beginDirect(Eigen::Index size) {
   direct_values_ = nullptr;
+  direct_count_ = 0;
   if (kept_.empty() || kept_.front()->new_index.size() != size ||
       kept_.front()->entry_row.empty()) {
     return false;
   }
   cursor_ = 0;
   Analysis& a = *kept_.front();
+  direct_row_ = a.entry_row.data();
+  direct_col_ = a.entry_col.data();
+  direct_slot_ = a.slot.data();
+  direct_count_ = a.entry_row.size();
   direct_values_ = a.upper.valuePtr();
   std::fill(direct_values_, direct_values_ + a.upper.nonZeros(), 0.0);
   return true;
 }
 
 bool PatternCachedLdlt::endDirect() {
-  const bool complete = direct_values_ != nullptr && cursor_ == kept_.front()->entry_row.size();
+  const bool complete = direct_values_ != nullptr && cursor_ == direct_count_;
   direct_values_ = nullptr;
+  direct_count_ = 0;
   return complete;
 }
 

@@ -49,6 +49,7 @@ class PatternCachedLdlt {
     most_kept_ = other.most_kept_;
     kept_.clear();
     direct_values_ = nullptr;
+    direct_count_ = 0;
     return *this;
   }
 
@@ -69,12 +70,10 @@ class PatternCachedLdlt {
   /// duplicates summed); false when (row, col) is not the next entry of that sequence (the
   /// caller then lists the entries for factorize()).
   bool addDirect(int row, int col, double value) {
-    const Analysis& a = *kept_.front();
-    if (cursor_ >= a.entry_row.size() || a.entry_row[cursor_] != row ||
-        a.entry_col[cursor_] != col) {
+    if (cursor_ >= direct_count_ || direct_row_[cursor_] != row || direct_col_[cursor_] != col) {
       return false;
     }
-    const int slot = a.slot[cursor_++];
+    const int slot = direct_slot_[cursor_++];
     if (slot >= 0) direct_values_[slot] += value;
     return true;
   }
@@ -174,7 +173,13 @@ class PatternCachedLdlt {
   double ordered_fill_ = 0.0;     ///< factor nonzeros per matrix nonzero at the last ordering [-]
   /// The kept analyses, the last factorized first.
   std::vector<std::unique_ptr<Analysis>> kept_;
-  std::size_t cursor_ = 0;           ///< the next entry addDirect() expects
+  std::size_t cursor_ = 0;  ///< the next entry addDirect() expects
+  /// The front analysis's sequence (rows, columns, slots; direct_count_ entries) while entries
+  /// are added directly: addDirect() runs once per entry of every Newton system.
+  const int* direct_row_ = nullptr;
+  const int* direct_col_ = nullptr;
+  const int* direct_slot_ = nullptr;
+  std::size_t direct_count_ = 0;
   double* direct_values_ = nullptr;  ///< the front's upper values while entries are added directly
   long zero_free_analyses_ = 0;
   mutable Eigen::VectorXd permuted_;  ///< a right-hand side in the permuted order
