@@ -16,6 +16,7 @@ inline void timeSteps(benchmark::State& state, Simulator& sim) {
     benchmark::ClobberMemory();
   }
   state.counters["iterations/step"] = sim.lastHealth().projection_iterations;
+  state.counters["factorizations/step"] = sim.lastHealth().factorizations;
 }
 
 /// Steps `start` with `drive(sim)` (which sets the scene's targets and steps it) until its first

@@ -26,6 +26,15 @@ inline FabricSpec cottonPatch(int ends, int picks, double weft_length, double wa
   return spec;
 }
 
+/// A side x side cotton weave, 12.5 mm between yarns, pinned at its two top corners.
+inline Simulator heldAtCorners(int side, const SimulationParameters& parameters) {
+  const double length = 0.0125 * (side - 1);
+  FabricSpec spec = cottonPatch(side, side, length, length);
+  spec.pinned_sides.clear();
+  spec.pinned = {{0, 0}, {0, -1}};
+  return Simulator(parameters, {}, {spec});
+}
+
 /// Spacing [m] between the yarns of settledPatch().
 constexpr double kPatchSpacing = 0.0125;
 

@@ -9,15 +9,6 @@
 namespace yarn_tearing::test {
 namespace {
 
-/// A side x side cotton weave, 12.5 mm between yarns, pinned at its two top corners.
-Simulator heldAtCorners(int side, const SimulationParameters& parameters) {
-  const double length = 0.0125 * (side - 1);
-  FabricSpec spec = cottonPatch(side, side, length, length);
-  spec.pinned_sides.clear();
-  spec.pinned = {{0, 0}, {0, -1}};
-  return Simulator(parameters, {}, {spec});
-}
-
 TEST(VertexCondensation, AFabricHeldAtItsCornersStepsAsWithWholeSystems) {
   // Released flat, it falls, swings and sags between its corners for 0.3 s at dt = 1e-3.
   SimulationParameters parameters;

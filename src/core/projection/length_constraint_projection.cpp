@@ -27,15 +27,18 @@ ProjectionResult LengthConstraintProjection::project(
   multiplier_.assign(q, 0.0);
   // Contacts are rows of the Newton steps only: Gauss-Seidel is left to contact-free scenes.
   if (contacts != nullptr && contacts->empty()) contacts = nullptr;
+  const long factorizations = newton_.factorizations();
   ProjectionResult resting;
   if (contacts != nullptr && projectContactsFast(position, vertices, edges, limits, parameters,
                                                  gram, *contacts, resting)) {
+    resting.factorizations = static_cast<int>(newton_.factorizations() - factorizations);
     return resting;
   }
-  const ProjectionResult result =
+  ProjectionResult result =
       parameters.projection_method == ProjectionMethod::kGaussSeidel && contacts == nullptr
           ? projectGaussSeidel(position, edges, parameters)
           : projectFast(position, edges, parameters, gram, contacts, step_start);
+  result.factorizations = static_cast<int>(newton_.factorizations() - factorizations);
   holdEdgesBetweenSupports(position, edges);
   return result;
 }

@@ -25,6 +25,20 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
   } else {
     last_eliminated_.clear();
   }
+  if (lastFactorFits(contacts)) {
+    if (reuse_wait_ > 0) {
+      --reuse_wait_;
+    } else if (solveWithLastFactor(rows, predicted, inverse_mass, edges, stretch_state, position,
+                                   multiplier)) {
+      reuse_backoff_ = 0;
+      return true;
+    } else {
+      // Where systems change too fast for the last factors, try them ever more rarely.
+      reuse_backoff_ = std::min(2 * reuse_backoff_ + 1, kMostReuseWait);
+      reuse_wait_ = reuse_backoff_;
+    }
+  }
+  last_factorization_.valid = false;
   const auto assemble = [&]() {
     triplets_.clear();
     if (dense_band_) dense_band_factorization_.begin(rows, chainBandwidth(edges));
@@ -54,6 +68,7 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
   if (unsymmetric_) return solveUnsymmetric(rows);
   if (!solveSymmetric(rows)) return false;
   if (start_.direction == nullptr) return true;
+  if (!banded_ && contacts == nullptr) rememberFactorization();
   return refineOnStartDirections(edges, position, inverse_mass, multiplier, stretch_state);
 }
 
@@ -120,7 +135,55 @@ void StiffNewtonStep::chooseCondensation(const EdgeSet& edges, const EdgeInciden
   last_eliminated_ = condensation_.eliminated();
 }
 
+bool StiffNewtonStep::lastFactorFits(const ContactSet* contacts) const {
+  const LastFactorization& last = last_factorization_;
+  return last.valid && !force_fresh_ && !banded_ && contacts == nullptr &&
+         start_.direction != nullptr && !refine_ && last.condensed == condensing_ &&
+         last.vertex_row == vertex_row_ && last.edge_row == edge_row_ &&
+         last.idle_row == idle_row_ &&
+         (!condensing_ || last.eliminated == condensation_.eliminated());
+}
+
+void StiffNewtonStep::rememberFactorization() {
+  LastFactorization& last = last_factorization_;
+  last.valid = true;
+  last.condensed = condensing_;
+  last.vertex_row = vertex_row_;
+  last.edge_row = edge_row_;
+  last.idle_row = idle_row_;
+  if (condensing_) last.eliminated = condensation_.eliminated();
+}
+
+bool StiffNewtonStep::solveWithLastFactor(int rows, const std::vector<Eigen::Vector3d>& predicted,
+                                          const std::vector<double>& inverse_mass,
+                                          const EdgeSet& edges,
+                                          const EdgeStretchState& stretch_state,
+                                          const std::vector<Eigen::Vector3d>& position,
+                                          const std::vector<double>& multiplier) {
+  rhs_only_ = true;
+  rhs_.setZero(rows);
+  addVertexRows(predicted, inverse_mass, position);
+  const bool assembled = addEdgeRows(edges, stretch_state, position, multiplier);
+  rhs_only_ = false;
+  if (!assembled) return false;
+  solution_.setZero(rows);
+  double last_change = 0.0;  // the last pass's correction [mixed units]
+  for (int pass = 0; pass < kReusePasses; ++pass) {
+    exactResidual(edges, position, inverse_mass, multiplier, stretch_state);
+    if (!solveAssembled(residual_, correction_)) return false;
+    solution_ += correction_;
+    const double change = correction_.lpNorm<Eigen::Infinity>();
+    const double goal = kReuseTolerance * solution_.lpNorm<Eigen::Infinity>();
+    if (change <= goal) return solution_.allFinite();
+    // A correction that does not shrink: the factors are too far off.
+    if (pass > 0 && !(change < last_change)) return false;
+    last_change = change;
+  }
+  return false;
+}
+
 void StiffNewtonStep::addBlock(int row, int col, const Eigen::Matrix3d& block) {
+  if (rhs_only_) return;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) addEntry(row + i, col + j, block(i, j));
   }
@@ -215,6 +278,7 @@ void StiffNewtonStep::assembleMatrix(int rows) {
 bool StiffNewtonStep::solveUnsymmetric(int rows) {
   // Sliding friction couples its normal multiplier into the vertex rows only.
   assembleMatrix(rows);
+  ++factorizations_;
   sliding_factorization_.lu.compute(matrix_);
   if (sliding_factorization_.lu.info() != Eigen::Success) return false;
   solution_ = sliding_factorization_.lu.solve(rhs_);
@@ -228,6 +292,7 @@ bool StiffNewtonStep::solveUnsymmetric(int rows) {
 bool StiffNewtonStep::solveSymmetric(int rows) {
   // The dense band keeps its own copy of the matrix (refine()).
   if ((banded_ && !dense_band_) || (refine_ && !banded_)) assembleMatrix(rows);
+  ++factorizations_;
   if (dense_band_) {
     if (!dense_band_factorization_.factorize()) return false;
   } else if (banded_) {

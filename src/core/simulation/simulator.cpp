@@ -88,9 +88,14 @@ Simulator::Simulator(const SimulationParameters& parameters, Scene scene)
 void Simulator::setParameters(const SimulationParameters& parameters) {
   parameters.validate();
   parameters_ = parameters;
+  applySolverSwitches();
+}
+
+void Simulator::applySolverSwitches() {
   work_.gram.forceGeneralPath(parameters_.force_general_solver);
   work_.gram.forceDirectSolves(parameters_.force_direct_solves);
   work_.projection.forceFullNewtonSystems(parameters_.force_full_newton_systems);
+  work_.projection.forceFreshFactorizations(parameters_.force_fresh_factorizations);
 }
 
 void Simulator::reset() {
@@ -121,9 +126,7 @@ void Simulator::resetWorkspace() {
     work_.vertex_radius[v] = scene_.yarns[scene_.vertices.yarn[v]].radius;
   }
   contact_wrench_.assign(obstacles_.size(), ContactWrench{});
-  work_.gram.forceGeneralPath(parameters_.force_general_solver);
-  work_.gram.forceDirectSolves(parameters_.force_direct_solves);
-  work_.projection.forceFullNewtonSystems(parameters_.force_full_newton_systems);
+  applySolverSwitches();
 }
 
 void Simulator::step() {
@@ -416,6 +419,7 @@ void Simulator::projectLengthConstraints() {
     work_.constraint_tension[e] = work_.projection.constraintForce(e);
   }
   health_.projection_iterations = result.iterations;
+  health_.factorizations = result.factorizations;
   health_.max_constraint_violation = result.max_violation;
   health_.projection_converged = result.converged;
   health_.force_mismatch = result.force_mismatch;

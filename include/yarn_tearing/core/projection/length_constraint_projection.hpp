@@ -31,6 +31,7 @@ struct ProjectionResult {
   /// fast iterations treat unstably ((omega dt)^2 = w sum_e m_e / l_e > 1). Fast projection only.
   double force_mismatch = 0.0;
   bool converged = false;  ///< max_violation, max_penetration, force_mismatch <= tolerance
+  int factorizations = 0;  ///< Newton systems factorized [-]
 };
 
 /// Stage 3: limits every intact edge, stretch only, to
@@ -64,6 +65,8 @@ class LengthConstraintProjection {
  public:
   /// Newton steps solve their whole systems (StiffNewtonStep::forceFullSystems).
   void forceFullNewtonSystems(bool force) { newton_.forceFullSystems(force); }
+  /// Newton steps factorize every system (StiffNewtonStep::forceFreshFactorizations).
+  void forceFreshFactorizations(bool force) { newton_.forceFreshFactorizations(force); }
   /// Projects `position` in place. `limits` gives each edge's compliance c [m/N] and largest
   /// stretch [m]; masses and supports come from `vertices`. With `step_start` [m], the
   /// positions at the start of the step, a vertex that is slow sideways ((omega dt)^2 <=

@@ -76,6 +76,11 @@ class StiffNewtonStep {
   bool stoppedEarly() const { return stopped_early_; }
   /// Never eliminates vertices from the system (VertexCondensation), for comparing the two.
   void forceFullSystems(bool force) { force_full_ = force; }
+  /// Factorizes every system, never solving one with the last factorization
+  /// (solveWithLastFactor()), for comparing the two.
+  void forceFreshFactorizations(bool force) { force_fresh_ = force; }
+  /// Systems factorized since this object was made [-].
+  long factorizations() const { return factorizations_; }
   /// From now on in this projection, every Newton step pivots until its taut set holds.
   void pivotFully() { full_pivoting_ = true; }
   /// From now on in this projection, each Newton step's solve takes one pass of iterative
@@ -134,6 +139,7 @@ class StiffNewtonStep {
   /// lower triangle), straight into the analysed pattern (direct_) or as a triplet (both
   /// triangles listed); a condensed system's rows are its reduced ones.
   void addEntry(int row, int col, double value) {
+    if (rhs_only_) return;
     if (dense_band_) {
       dense_band_factorization_.add(row, col, value);
       return;
@@ -178,6 +184,20 @@ class StiffNewtonStep {
   bool solveUnsymmetric(int rows);
   /// Factorizes the symmetric system (banded or general) and solves it into solution_.
   bool solveSymmetric(int rows);
+  /// Whether this solve's system has the rows, taut set and eliminated vertices of the last one
+  /// the general path factorized (LastFactorization), so that solveWithLastFactor() may use it.
+  bool lastFactorFits(const ContactSet* contacts) const;
+  /// Solves this solve's system by iterative refinement on the exact system (exactResidual()),
+  /// each pass solved with the last factorization: only the right-hand side is assembled. False
+  /// when kReusePasses do not bring the correction below kReuseTolerance of the solution (the
+  /// caller then assembles and factorizes).
+  bool solveWithLastFactor(int rows, const std::vector<Eigen::Vector3d>& predicted,
+                           const std::vector<double>& inverse_mass, const EdgeSet& edges,
+                           const EdgeStretchState& stretch_state,
+                           const std::vector<Eigen::Vector3d>& position,
+                           const std::vector<double>& multiplier);
+  /// Remembers this solve's layout as the general path's last factorized one.
+  void rememberFactorization();
   /// Refines solution_ on the exact system where edge ends take their start directions.
   bool refineOnStartDirections(const EdgeSet& edges, const std::vector<Eigen::Vector3d>& position,
                                const std::vector<double>& inverse_mass,
@@ -295,6 +315,8 @@ class StiffNewtonStep {
   /// system's analysis rather than analysing a new reduced one in every step.
   bool condensing_ = false;
   bool force_full_ = false;                      ///< see forceFullSystems()
+  bool force_fresh_ = false;                     ///< see forceFreshFactorizations()
+  long factorizations_ = 0;                      ///< see factorizations()
   std::vector<std::uint8_t> last_eliminated_;    ///< the vertices the last solve would eliminate
   std::vector<int> system_row_;                  ///< per edge: its taut or idle row, else -1
   std::vector<std::uint8_t> plain_;              ///< per edge: no geometric stiffness (condensing)
@@ -317,6 +339,41 @@ class StiffNewtonStep {
   StartDirections start_;       ///< the start directions of the current apply
   /// Refinement passes on the exact system when some ends take start directions.
   static constexpr int kRefinementPasses = 2;
+  /// The layout of the system the general path last factorized (not that of a contact system):
+  /// a settled scene's next system differs from it only by the small change of its directions,
+  /// geometric stiffness and compliances, and is solved by refinement with its factors. Copies
+  /// start without one, as the factorizations do.
+  struct LastFactorization {
+    LastFactorization() = default;
+    LastFactorization(const LastFactorization&) {}
+    LastFactorization& operator=(const LastFactorization&) {
+      valid = false;
+      return *this;
+    }
+    bool valid = false;      ///< the factors are those of this layout
+    bool condensed = false;  ///< the factorization was of the condensed system
+    std::vector<int> vertex_row;
+    std::vector<int> edge_row;
+    std::vector<int> idle_row;
+    std::vector<std::uint8_t> eliminated;  ///< the eliminated vertices (condensed)
+  };
+  LastFactorization last_factorization_;
+  /// Refinement passes a solve with the last factorization may take before it gives up [-].
+  static constexpr int kReusePasses = 4;
+  /// Largest last correction, relative to the solution, that ends such a solve [-]. A freshly
+  /// factorized system's kRefinementPasses end there or above in most solves (on start
+  /// directions the symmetric system is itself only a preconditioner: a fabric held at its
+  /// corners ended at 1e-2 to 1e-7 of the solution, most near 1e-3); the projection's own
+  /// convergence test then decides whether the iterate is done.
+  static constexpr double kReuseTolerance = 1e-3;
+  /// Solves with a fitting last factorization to leave out before trying one again after it did
+  /// not converge: doubled (plus one) at each such try, 0 after one that converged [-].
+  int reuse_backoff_ = 0;
+  int reuse_wait_ = 0;  ///< fitting solves still to leave out [-]
+  /// Most solves left out between two tries [-].
+  static constexpr int kMostReuseWait = 63;
+  /// Only the right-hand side is assembled (addEntry() and addBlock() add nothing).
+  bool rhs_only_ = false;
   std::vector<double> pass_multiplier_;  ///< multiplier of each edge in a pass's solution [kg*m]
   std::vector<double> stretch_;          ///< a pass's linearized stretch of slack edges [m]
   TautFrontier frontier_;                ///< takes in runs of slack edges at once

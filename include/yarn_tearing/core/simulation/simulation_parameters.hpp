@@ -80,6 +80,9 @@ struct SimulationParameters {
   /// Newton steps solve the whole system, never eliminating the vertices no edge stiffens
   /// (StiffNewtonStep; for comparing the two).
   bool force_full_newton_systems = false;
+  /// Newton steps factorize every system, never solving one by refinement with the last
+  /// factorization of the same layout (StiffNewtonStep; for comparing the two).
+  bool force_fresh_factorizations = false;
 
   /// Throws std::invalid_argument naming the parameter and the allowed range.
   void validate() const;

@@ -148,6 +148,8 @@ class Simulator {
   void restoreNonFiniteYarns(std::size_t first_event_of_step);
   /// Sizes the scratch arrays for scene_ and forgets the solvers' warm starts.
   void resetWorkspace();
+  /// Passes parameters_' solver switches (force_general_solver and the like) to the solvers.
+  void applySolverSwitches();
 
   SimulationParameters parameters_;
   Scene initial_scene_;

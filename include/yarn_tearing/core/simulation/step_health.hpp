@@ -10,7 +10,9 @@ namespace yarn_tearing {
 struct StepHealth {
   double max_constraint_violation = 0.0;  ///< max (length - limit) / limit after projection [-]
   int projection_iterations = 0;          ///< Newton steps or sweeps used
-  bool projection_converged = true;       ///< violation and force mismatch within tolerance
+  /// Newton systems factorized; the others were solved with the last factors [-].
+  int factorizations = 0;
+  bool projection_converged = true;  ///< violation and force mismatch within tolerance
   /// Largest distance [-, per edge length] between a vertex's correction and the one the final
   /// constraint forces along the final edge directions give (ProjectionResult::force_mismatch).
   double force_mismatch = 0.0;
