@@ -35,6 +35,23 @@ inline Simulator heldAtCorners(int side, const SimulationParameters& parameters)
   return Simulator(parameters, {}, {spec});
 }
 
+/// Two side x side weaves held at their two top corners, air damping 0.05, at steps of
+/// `time_step` [s]: `usual` with the default solvers, `switched` with the solver switch `compare`
+/// (a SimulationParameters::force_* flag) set, for two ways of solving the same steps.
+struct HeldBothWays {
+  Simulator usual;
+  Simulator switched;
+};
+inline HeldBothWays heldAtCornersBothWays(int side, bool SimulationParameters::*compare,
+                                          double time_step = SimulationParameters{}.time_step) {
+  SimulationParameters parameters;
+  parameters.air_damping = 0.05;
+  parameters.time_step = time_step;
+  SimulationParameters switched = parameters;
+  switched.*compare = true;
+  return {heldAtCorners(side, parameters), heldAtCorners(side, switched)};
+}
+
 /// Spacing [m] between the yarns of settledPatch().
 constexpr double kPatchSpacing = 0.0125;
 

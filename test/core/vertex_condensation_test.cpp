@@ -11,11 +11,8 @@ namespace {
 
 TEST(VertexCondensation, AFabricHeldAtItsCornersStepsAsWithWholeSystems) {
   // Released flat, it falls, swings and sags between its corners for 0.3 s at dt = 1e-3.
-  SimulationParameters parameters;
-  parameters.air_damping = 0.05;
-  Simulator condensed = heldAtCorners(24, parameters);
-  parameters.force_full_newton_systems = true;
-  Simulator whole = heldAtCorners(24, parameters);
+  auto [condensed, whole] =
+      heldAtCornersBothWays(24, &SimulationParameters::force_full_newton_systems);
   // Within the projection's tolerance: 1e-6 of a 12.5 mm edge, 1e-6 of the largest tension.
   expectSameSteps(condensed, whole, 300, 1e-6 * 0.0125, 1e-6);
 }
