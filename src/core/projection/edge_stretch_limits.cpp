@@ -6,16 +6,6 @@
 
 namespace yarn_tearing {
 
-double stabilitySpringConstant(const VertexSet& vertices, std::uint32_t a, std::uint32_t b,
-                               const SimulationParameters& p) {
-  double lighter = 0.0;
-  if (!vertices.isSupport(a)) lighter = vertices.mass[a];
-  if (!vertices.isSupport(b)) {
-    lighter = lighter > 0.0 ? std::min(lighter, vertices.mass[b]) : vertices.mass[b];
-  }
-  return p.soft_spring_ratio * lighter / (p.time_step * p.time_step);
-}
-
 namespace {
 
 /// The stresses [Pa] on the reference curve between which edge e's plastic elongation is linear

@@ -22,10 +22,9 @@ void EdgeStretchState::reset(const EdgeSet& edges, const EdgeStretchLimits& limi
     const double flow_start =
         flows ? limits.flow_start[e] * time_step2_ : std::numeric_limits<double>::infinity();
     const double s = limits.constraintCompliance(e) / time_step2_;
-    const double held_from = limits.max_stretch[e] / s;
     if (flow_start <= 0.0) {
       expand(edges, e);  // flowing from the start: its spring alone is past its yield stress
-    } else if (flow_start < held_from) {
+    } else if (flows && flow_start < limits.max_stretch[e] / s) {
       // Elastic up to where its flow starts; the rest is built if a multiplier gets there.
       begin_[e] = static_cast<std::uint32_t>(pieces_.size());
       pieces_.push_back(Piece{0.0, edges.rest_length[e], s});
@@ -33,7 +32,7 @@ void EdgeStretchState::reset(const EdgeSet& edges, const EdgeStretchLimits& limi
       end_[e] = begin_[e] + 2;
       pending_[e] = 1;
     } else {
-      buildPieces(edges, e, {});
+      buildPieces(edges, e, {}, s);
     }
     set(e, begin_[e]);
   }
@@ -41,18 +40,18 @@ void EdgeStretchState::reset(const EdgeSet& edges, const EdgeStretchLimits& limi
 
 void EdgeStretchState::expand(const EdgeSet& edges, std::size_t e) {
   flowKnots(edges, *limits_->yarns, e, knots_);
-  buildPieces(edges, e, knots_);
+  buildPieces(edges, e, knots_, limits_->constraintCompliance(e) / time_step2_);
   pending_[e] = 0;
   piece_[e] = begin_[e];  // a pending edge is on its first piece, which this one repeats
 }
 
 void EdgeStretchState::buildPieces(const EdgeSet& edges, std::size_t e,
-                                   const std::vector<FlowKnot>& knots) {
+                                   const std::vector<FlowKnot>& knots, double elastic_shift) {
   // limit(m) = L + s m + X(m), X the plastic elongation of the flow kinks (force T_c = m / dt^2),
   // continuous and rising; held from where it reaches the breaking length L + s_max on.
   const EdgeStretchLimits& limits = *limits_;
   begin_[e] = static_cast<std::uint32_t>(pieces_.size());
-  const double s = limits.constraintCompliance(e) / time_step2_;
+  const double s = elastic_shift;
   const double rest = edges.rest_length[e];
   const double breaking_length = rest + limits.max_stretch[e];
   std::size_t knot = 0;

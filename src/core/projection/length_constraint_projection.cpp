@@ -157,13 +157,17 @@ void LengthConstraintProjection::chooseCorrectionDirections(
     if (!candidate_[e]) continue;
     const std::uint32_t a = edges.vertex_a[e];
     const std::uint32_t b = edges.vertex_b[e];
+    // The start direction is read only where an end takes it.
+    const bool slow_a = slow(a);
+    const bool slow_b = slow(b);
+    if (!slow_a && !slow_b) continue;
     const Eigen::Vector3d d = step_start[b] - step_start[a];
     const double length = d.norm();
     if (!(length > 0.0)) continue;
     start_direction_[e] = d / length;
     if (start_direction_[e].dot(direction_[e]) < kStartDirectionCosine) continue;
-    start_at_a_[e] = slow(a) ? 1 : 0;
-    start_at_b_[e] = slow(b) ? 1 : 0;
+    start_at_a_[e] = slow_a ? 1 : 0;
+    start_at_b_[e] = slow_b ? 1 : 0;
     any_start_direction_ = any_start_direction_ || start_at_a_[e] || start_at_b_[e];
   }
 }

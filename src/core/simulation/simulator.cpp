@@ -474,6 +474,7 @@ void Simulator::estimateTensions() {
     edges.tension[e] = work_.constraint_tension[e] + edges.spring_tension[e];
     const std::uint32_t a = edges.vertex_a[e];
     const std::uint32_t b = edges.vertex_b[e];
+    if (!vertices.isSupport(a) && !vertices.isSupport(b)) continue;
     const Eigen::Vector3d d = vertices.position[b] - vertices.position[a];
     const double length = d.norm();
     if (!(length > 0.0)) continue;

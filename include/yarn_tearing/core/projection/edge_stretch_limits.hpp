@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -58,8 +59,15 @@ struct EdgeStretchLimits {
 
 /// The stiffest explicit spring between vertices `a` and `b` that stays stable [N/m]:
 /// soft_spring_ratio * (the lighter free vertex's mass) / dt^2; 0 when both are held.
-double stabilitySpringConstant(const VertexSet& vertices, std::uint32_t a, std::uint32_t b,
-                               const SimulationParameters& p);
+inline double stabilitySpringConstant(const VertexSet& vertices, std::uint32_t a, std::uint32_t b,
+                                      const SimulationParameters& p) {
+  double lighter = 0.0;
+  if (!vertices.isSupport(a)) lighter = vertices.mass[a];
+  if (!vertices.isSupport(b)) {
+    lighter = lighter > 0.0 ? std::min(lighter, vertices.mass[b]) : vertices.mass[b];
+  }
+  return p.soft_spring_ratio * lighter / (p.time_step * p.time_step);
+}
 
 /// Fills `limits` from the edges' rest lengths, areas and materials, the vertex masses and the
 /// time step.

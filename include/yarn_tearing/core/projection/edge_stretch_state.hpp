@@ -54,8 +54,10 @@ class EdgeStretchState {
     double shift = 0.0;  ///< S [1/kg]
   };
   /// Appends edge e's pieces to pieces_ from `knots` (its flow; none: elastic up to its
-  /// breaking length) and points begin_[e], end_[e] at them.
-  void buildPieces(const EdgeSet& edges, std::size_t e, const std::vector<FlowKnot>& knots);
+  /// breaking length) and points begin_[e], end_[e] at them; `elastic_shift` is its constraint's
+  /// compliance over dt^2 [1/kg].
+  void buildPieces(const EdgeSet& edges, std::size_t e, const std::vector<FlowKnot>& knots,
+                   double elastic_shift);
   /// Builds edge e's flow pieces (flowKnots) the first time a multiplier reaches them.
   void expand(const EdgeSet& edges, std::size_t e);
   /// The piece (index into pieces_) next to edge e's current one on the side of multiplier m.
