@@ -1,7 +1,5 @@
 #include "yarn_tearing/core/projection/edge_gram_solver.hpp"
 
-#include <Eigen/IterativeLinearSolvers>
-
 #include "yarn_tearing/core/projection/gram_operator.hpp"
 
 namespace yarn_tearing {
@@ -77,19 +75,24 @@ bool EdgeGramSolver::solveIterative(const EdgeSet& edges, const GramSystem& syst
                                     std::vector<double>& rhs, const std::vector<double>& guess) {
   const auto q = static_cast<Eigen::Index>(included_.size());
   const GramOperator matrix(edges, *system.direction, *system.vertex_weight, included_, diagonal_,
-                            gram_diagonal_);
-  Eigen::ConjugateGradient<GramOperator, Eigen::Lower | Eigen::Upper, EigenChainPreconditioner> cg;
-  cg.setTolerance(kIterativeTolerance);
-  cg.setMaxIterations(kMostIterations);
-  cg.preconditioner().use(preconditioner_);
-  cg.compute(matrix);
+                            gram_diagonal_, vertex_sum_);
   const Eigen::Map<const Eigen::VectorXd> b(rhs.data(), q);
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(q);
+  Eigen::VectorXd& x = iterate_;
+  x.setZero(q);
   if (static_cast<Eigen::Index>(guess.size()) == q) {
     for (Eigen::Index e = 0; e < q; ++e) x[e] = included_[e] ? guess[e] : 0.0;
   }
-  x = cg.solveWithGuess(b, x);
-  if (cg.info() != Eigen::Success || !x.allFinite()) return false;
+  const auto multiply = [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) {
+    matrix.multiply(v, out);
+  };
+  const auto precondition = [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) {
+    preconditioner_.apply(v, out);
+  };
+  if (!conjugate_gradients_.solve(multiply, precondition, b, x, kIterativeTolerance,
+                                  kMostIterations) ||
+      !x.allFinite()) {
+    return false;
+  }
   Eigen::Map<Eigen::VectorXd>(rhs.data(), q) = x;
   return true;
 }

@@ -10,7 +10,7 @@
 
 namespace yarn_tearing {
 
-/// A preconditioner of the edge Gram system (GramOperator) for Eigen's ConjugateGradient: the
+/// A preconditioner of the edge Gram system (GramOperator) for conjugate gradients: the
 /// system's couplings along each yarn, kept, and those between yarns, dropped. In chain order
 /// (EdgeChains) that is a tridiagonal matrix, each yarn's block the Gram matrix of that yarn alone
 /// (positive definite), factorized in O(q). Two yarns couple only where they share a vertex v, by
@@ -42,42 +42,6 @@ class ChainPreconditioner {
   std::vector<double> chain_upper_;     ///< couplings along the chains
   TridiagonalLdlt tridiagonal_;
   mutable std::vector<double> chain_rhs_;  ///< a right-hand side in chain order (scratch)
-};
-
-/// ChainPreconditioner as Eigen's iterative solvers take a preconditioner (set with use()).
-class EigenChainPreconditioner {
- public:
-  using StorageIndex = int;
-  enum { ColsAtCompileTime = Eigen::Dynamic, MaxColsAtCompileTime = Eigen::Dynamic };
-
-  /// Applies `source`, which must outlive the solve.
-  void use(const ChainPreconditioner& source) { source_ = &source; }
-  Eigen::Index rows() const { return source_->size(); }
-  Eigen::Index cols() const { return rows(); }
-  template <typename MatrixType>
-  EigenChainPreconditioner& analyzePattern(const MatrixType&) {
-    return *this;
-  }
-  template <typename MatrixType>
-  EigenChainPreconditioner& factorize(const MatrixType&) {
-    return *this;
-  }
-  template <typename MatrixType>
-  EigenChainPreconditioner& compute(const MatrixType&) {
-    return *this;
-  }
-  Eigen::ComputationInfo info() const { return Eigen::Success; }
-  template <typename Rhs, typename Dest>
-  void _solve_impl(const Rhs& b, Dest& x) const {
-    source_->apply(b, x);
-  }
-  template <typename Rhs>
-  Eigen::Solve<EigenChainPreconditioner, Rhs> solve(const Eigen::MatrixBase<Rhs>& b) const {
-    return Eigen::Solve<EigenChainPreconditioner, Rhs>(*this, b.derived());
-  }
-
- private:
-  const ChainPreconditioner* source_ = nullptr;
 };
 
 }  // namespace yarn_tearing

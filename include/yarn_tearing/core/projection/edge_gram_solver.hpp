@@ -6,12 +6,14 @@
 #include <cstdint>
 #include <vector>
 
+#include "yarn_tearing/core/linalg/conjugate_gradients.hpp"
 #include "yarn_tearing/core/linalg/pattern_cached_ldlt.hpp"
 #include "yarn_tearing/core/linalg/tridiagonal_ldlt.hpp"
 #include "yarn_tearing/core/model/edge_chains.hpp"
 #include "yarn_tearing/core/model/edge_incidence.hpp"
 #include "yarn_tearing/core/model/edge_set.hpp"
 #include "yarn_tearing/core/projection/chain_preconditioner.hpp"
+#include "yarn_tearing/core/projection/gram_operator.hpp"
 
 namespace yarn_tearing {
 
@@ -31,7 +33,7 @@ struct GramSystem {
 /// restricted to the active edges. Inactive edges, and edges whose vertices all have weight 0,
 /// get x_e = 0. When every edge joins consecutive vertices in increasing order (chains) it is an
 /// O(N) tridiagonal solve. On other edge graphs (woven fabrics) the unregularized systems of the
-/// projection are solved by conjugate gradients (Eigen's ConjugateGradient on the matrix-free
+/// projection are solved by conjugate gradients (ConjugateGradients on the matrix-free
 /// GramOperator) preconditioned by the yarns' own blocks (ChainPreconditioner), started from the
 /// last solution, to a relative residual of kIterativeTolerance, from kIterativeEdges edges on
 /// (a 64 x 64 fabric: 8,064); where that does not converge within kMostIterations, and for
@@ -90,7 +92,10 @@ class EdgeGramSolver {
   EdgeIncidence incidence_;
   EdgeChains chains_;
   ChainPreconditioner preconditioner_;
-  std::vector<double> last_solution_;   ///< conjugate gradients' last solution (their next start)
+  std::vector<double> last_solution_;  ///< conjugate gradients' last solution (their next start)
+  Eigen::VectorXd iterate_;            ///< conjugate gradients' iterate
+  std::vector<Eigen::Vector3d> vertex_sum_;  ///< GramOperator's per-vertex scratch
+  ConjugateGradients conjugate_gradients_;
   std::vector<double> diagonal_;        ///< assembled diagonal (1 for left-out edges)
   std::vector<std::uint8_t> included_;  ///< active edges with a movable vertex
   std::vector<double> upper_;           ///< banded: G_e,e+1
