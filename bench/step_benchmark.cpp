@@ -273,5 +273,3 @@ BENCHMARK(BM_StageMaterialAndTearing)->YARN_SIZES->Unit(benchmark::kMicrosecond)
 
 }  // namespace
 }  // namespace yarn_tearing
-
-BENCHMARK_MAIN();
