@@ -60,5 +60,6 @@ class InvalidConfigTest(unittest.TestCase):
                               "%s: stderr does not name '%s':\n%s" % (case, expect, result.stderr))
                 self.assertRegex(result.stderr, r"(invalid|missing) parameter /%s/" % name)
 
+
 if __name__ == "__main__":
     rostest.rosrun("yarn_tearing", "invalid_config", InvalidConfigTest)
