@@ -4,17 +4,16 @@ message on stderr that names the offending parameter (the file's `# expect: <tex
 
 Each config is uploaded to its own namespace /invalid_<file>, and the node binary is run
 directly with __name:=invalid_<file> so that it reads it as its private parameters."""
-import concurrent.futures
 import glob
 import os
 import re
-import subprocess
 import unittest
 
 import rosparam
 import roslib.packages
 import rospy
 import rostest
+from yarn_rostest_support import run_under_names
 
 NODE_TIMEOUT = 20.0  # [s]
 
@@ -34,25 +33,15 @@ class InvalidConfigTest(unittest.TestCase):
         materials = rosparam.load_file(rospy.get_param("~materials"))[0][0]
         files = sorted(glob.glob(os.path.join(rospy.get_param("~config_dir"), "*.yaml")))
         self.assertGreater(len(files), 5)
-        names = []
-        for path in files:
-            name = "invalid_" + os.path.splitext(os.path.basename(path))[0]
+        cases = [os.path.splitext(os.path.basename(path))[0] for path in files]
+        names = ["invalid_" + case for case in cases]
+        for path, name in zip(files, names):
             rosparam.upload_params("/" + name, materials)
             for params, namespace in rosparam.load_file(path):
                 rosparam.upload_params("/" + name, params)
-            names.append(name)
 
-        def run(name):
-            return subprocess.run([node_binary, "__name:=" + name], capture_output=True,
-                                  text=True, timeout=NODE_TIMEOUT)
-
-        # Four nodes per core at a time: each refuses its file at start and spends most of its
-        # second waiting on roscpp's start and shutdown.
-        workers = 4 * (os.cpu_count() or 1)
-        with concurrent.futures.ThreadPoolExecutor(max_workers=workers) as pool:
-            results = list(pool.map(run, names))
-        for path, name, result in zip(files, names, results):
-            case = os.path.splitext(os.path.basename(path))[0]
+        results = run_under_names(node_binary, names, NODE_TIMEOUT)
+        for path, case, name, result in zip(files, cases, names, results):
             with self.subTest(case=case):
                 self.assertNotEqual(result.returncode, 0, "%s: the node did not fail" % case)
                 expect = expected_text(path)

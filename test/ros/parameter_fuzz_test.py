@@ -4,17 +4,15 @@ types, huge strings, missing and unknown keys, yarns and fabrics past the budget
 check_config, which validates exactly as yarn_tearing_node does and then simulates up to 1 s.
 Each must exit 0 (valid, and the simulation stayed finite) or 1 with a message naming a parameter
 of its namespace; never 3 (valid but non-finite) and never a signal."""
-import concurrent.futures
 import copy
-import os
 import random
-import subprocess
 import unittest
 
 import rosparam
 import roslib.packages
 import rospy
 import rostest
+from yarn_rostest_support import run_under_names
 
 SEED = 10
 CASES = 200     # unless ~cases says
@@ -91,16 +89,7 @@ class ParameterFuzzTest(unittest.TestCase):
                 continue
             uploaded.append((case, name, config))
 
-        def check(name):
-            return subprocess.run([checker, "__name:=" + name], capture_output=True, text=True,
-                                  timeout=TIMEOUT)
-
-        # Four check_config per core at a time: a refused file's run is mostly roscpp's start
-        # and shutdown, waiting on the master and on threads that poll every 0.1 s (0.3 s wall,
-        # 0.02 s of processor time), and a valid one's stepping is bounded in processor time.
-        workers = 4 * (os.cpu_count() or 1)
-        with concurrent.futures.ThreadPoolExecutor(max_workers=workers) as pool:
-            results = list(pool.map(check, [name for _, name, _ in uploaded]))
+        results = run_under_names(checker, [name for _, name, _ in uploaded], TIMEOUT)
         for (case, name, config), result in zip(uploaded, results):
             with self.subTest(case=case, config=str(config)[:2000]):
                 self.assertIn(result.returncode, (0, 1), result.stderr[-2000:])
