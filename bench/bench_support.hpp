@@ -1,5 +1,5 @@
 // What the benchmark files share: the timing loops of one simulation step and of a window of
-// steps from a scene's first tear.
+// steps from a given state (a scene's first tear, a time).
 #pragma once
 
 #include <benchmark/benchmark.h>
@@ -19,29 +19,45 @@ inline void timeSteps(benchmark::State& state, Simulator& sim) {
   state.counters["factorizations/step"] = sim.lastHealth().factorizations;
 }
 
-/// Steps `start` with `drive(sim)` (which sets the scene's targets and steps it) until its first
-/// tear or `limit` [s] of simulated time; then each iteration steps that state `window` times
-/// with `drive` (copying it is not timed). `per_step` is the mean step [s] over the window,
-/// recoil substeps included, and `tears` the tears in it.
-template <typename Drive>
-void timeWindowFromFirstTear(benchmark::State& state, Simulator& start, double limit, int window,
-                             const Drive& drive) {
-  while (!start.recoilPending() && start.time() < limit) drive(start);
+/// Steps `start` with `drive(sim)` (which sets the scene's targets and steps it) until
+/// `ready(start)`; then each iteration steps that state `window` times with `drive` (copying it
+/// is not timed). `per_step` is the mean step [s] over the window, substeps included,
+/// `factorizations/step` the mean Newton systems factorized a step [-], and `tears` the tears in
+/// the window.
+template <typename Ready, typename Drive>
+void timeWindowFrom(benchmark::State& state, Simulator& start, const Ready& ready, int window,
+                    const Drive& drive) {
+  while (!ready(start)) drive(start);
   Simulator sim = start;
   std::size_t tears = 0;
+  long factorizations = 0;
   for (auto _ : state) {
     state.PauseTiming();
     sim = start;
     state.ResumeTiming();
-    for (int i = 0; i < window; ++i) drive(sim);
+    for (int i = 0; i < window; ++i) {
+      drive(sim);
+      factorizations += sim.lastHealth().factorizations;
+    }
     state.PauseTiming();
     tears = sim.takeTearEvents().size();
     state.ResumeTiming();
   }
+  const double steps = static_cast<double>(state.iterations()) * window;
   state.counters["per_step"] =
-      benchmark::Counter(static_cast<double>(state.iterations()) * window,
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+      benchmark::Counter(steps, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["factorizations/step"] = static_cast<double>(factorizations) / steps;
   state.counters["tears"] = static_cast<double>(tears);
+}
+
+/// timeWindowFrom() from the first tear of `start`, or from `limit` [s] of simulated time.
+template <typename Drive>
+void timeWindowFromFirstTear(benchmark::State& state, Simulator& start, double limit, int window,
+                             const Drive& drive) {
+  const auto torn = [limit](const Simulator& sim) {
+    return sim.recoilPending() || sim.time() >= limit;
+  };
+  timeWindowFrom(state, start, torn, window, drive);
 }
 
 }  // namespace yarn_tearing

@@ -4,6 +4,8 @@
 //     corners, settled, against the same weave hanging from its whole first row.
 //   BM_FabricCornersDrawnApart/16 vs BM_FabricAtRest/16: the node's fabric_draw scene from its
 //     first tear on (the tearing and the torn patch flapping from its corners).
+//   BM_FabricCornersSwinging/N vs BM_FabricAtRest/N: the same scene before it is drawn, the patch
+//     swinging down from its corners.
 //   BM_PatchObstacle/K: a 16 x 12 cotton patch hanging from its first row; K = 0 without an
 //     obstacle (the reference), 1 a 3 cm ball pressed 1 mm into its middle from the front (its
 //     cap, 11 mm across in the patch's plane, pokes through a 12.5 mm cell: the patch hangs
@@ -64,33 +66,66 @@ void BM_FabricHeldAtCorners(benchmark::State& state) {
   timeSteps(state, sim);
 }
 
-/// The scene of tools/measure_fabric_draw.py: a range(0) x range(0) cotton patch, 8 x 8 cm, 2 %
-/// crimp, pinned at its two top corners for 0.3 s, then the corners drawn apart along the weft at
-/// 2 cm/s each until the first tear; then each iteration steps that state kWindow times, 0.6 s
-/// (copying it is not timed): the tearing and the torn patch flapping from its corners. `per_step`
-/// is the mean step [s] over the window, `tears` the tears in it. Reference: BM_FabricAtRest/16.
-void BM_FabricCornersDrawnApart(benchmark::State& state) {
-  constexpr int kWindow = 600;
-  const int side = static_cast<int>(state.range(0));
-  FabricSpec spec = plainWeave(side, side, 0.08 / (side - 1));
-  spec.warp_crimp = 0.02;
-  spec.weft_crimp = 0.02;
-  spec.pinned = {{0, 0}, {0, -1}};
-  SimulationParameters parameters;
-  Simulator start(parameters, {}, {spec});
-  const std::uint32_t left = start.scene().fabricVertex(0, 0, 0);
-  const std::uint32_t right = start.scene().fabricVertex(0, 0, -1);
-  const Eigen::Vector3d left_start = start.scene().vertices.position[left];
-  const Eigen::Vector3d right_start = start.scene().vertices.position[right];
-  const auto drive = [&](Simulator& sim) {
-    const double travel = 0.02 * std::max(sim.time() + parameters.time_step - 0.3, 0.0);
+/// The scene of tools/measure_fabric_draw.py: a `side` x `side` cotton patch, 8 x 8 cm, 2 %
+/// crimp, pinned at its two top corners, which from 0.3 s on are drawn apart along the weft at
+/// 2 cm/s each (drive()).
+class CornersDrawnApart {
+ public:
+  explicit CornersDrawnApart(int side) : sim_(SimulationParameters{}, {}, {patch(side)}) {
+    left_ = sim_.scene().fabricVertex(0, 0, 0);
+    right_ = sim_.scene().fabricVertex(0, 0, -1);
+    left_start_ = sim_.scene().vertices.position[left_];
+    right_start_ = sim_.scene().vertices.position[right_];
+  }
+  /// The scene at its start (flat, at rest).
+  Simulator& start() { return sim_; }
+  /// Sets the corners' targets for the next step of `sim` and steps it.
+  void drive(Simulator& sim) const {
+    const double travel =
+        kDrawSpeed * std::max(sim.time() + sim.parameters().time_step - kDrawStart, 0.0);
     if (travel > 0.0) {
-      sim.setKinematicTarget(left, left_start - Eigen::Vector3d(travel, 0.0, 0.0));
-      sim.setKinematicTarget(right, right_start + Eigen::Vector3d(travel, 0.0, 0.0));
+      sim.setKinematicTarget(left_, left_start_ - Eigen::Vector3d(travel, 0.0, 0.0));
+      sim.setKinematicTarget(right_, right_start_ + Eigen::Vector3d(travel, 0.0, 0.0));
     }
     sim.step();
-  };
-  timeWindowFromFirstTear(state, start, 3.0, kWindow, drive);
+  }
+  static constexpr double kDrawStart = 0.3;   ///< when the corners start moving [s]
+  static constexpr double kDrawSpeed = 0.02;  ///< each corner's speed [m/s]
+
+ private:
+  static FabricSpec patch(int side) {
+    FabricSpec spec = plainWeave(side, side, 0.08 / (side - 1));
+    spec.warp_crimp = 0.02;
+    spec.weft_crimp = 0.02;
+    spec.pinned = {{0, 0}, {0, -1}};
+    return spec;
+  }
+  Simulator sim_;
+  std::uint32_t left_ = 0;
+  std::uint32_t right_ = 0;
+  Eigen::Vector3d left_start_;
+  Eigen::Vector3d right_start_;
+};
+
+/// CornersDrawnApart of range(0) x range(0) from its first tear: each iteration steps that
+/// state kWindow times, 0.6 s (copying it is not timed): the tearing and the torn patch flapping
+/// from its corners. Reference: BM_FabricAtRest/16.
+void BM_FabricCornersDrawnApart(benchmark::State& state) {
+  constexpr int kWindow = 600;
+  CornersDrawnApart scene(static_cast<int>(state.range(0)));
+  timeWindowFromFirstTear(state, scene.start(), 3.0, kWindow,
+                          [&scene](Simulator& sim) { scene.drive(sim); });
+}
+
+/// CornersDrawnApart of range(0) x range(0) before it is drawn: from 0.1 s, each iteration steps
+/// kWindow times, to 0.3 s: the patch let go flat, swinging down from its corners. Reference:
+/// BM_FabricAtRest of the same size.
+void BM_FabricCornersSwinging(benchmark::State& state) {
+  constexpr int kWindow = 200;
+  CornersDrawnApart scene(static_cast<int>(state.range(0)));
+  const auto swinging = [](const Simulator& sim) { return sim.time() >= 0.1 - 1e-9; };
+  timeWindowFrom(state, scene.start(), swinging, kWindow,
+                 [&scene](Simulator& sim) { scene.drive(sim); });
 }
 
 /// The 16 x 12 patch (12.5 mm between yarns, pinned along its first row, air damping) settled for
@@ -168,6 +203,7 @@ void BM_DiagonalGrid(benchmark::State& state) {
 
 BENCHMARK(BM_FabricHeldAtCorners)->Arg(32)->Arg(64)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FabricCornersDrawnApart)->Arg(16)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_FabricCornersSwinging)->Arg(16)->Arg(32)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_PatchObstacle)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_DiagonalGrid)->Args({8, 0})->Args({8, 1})->Unit(benchmark::kMicrosecond);
 
