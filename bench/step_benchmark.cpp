@@ -222,11 +222,11 @@ void BM_StageMaterialAndTearing(benchmark::State& state) {
   state.SetComplexityN(state.range(0));
 }
 
-/// The step right after a tear, which resolves the recoil in recoil_substeps substeps: the settled
-/// yarn's end pulled at twice the breaking force until it tears, then that state stepped once
-/// (copying it back is not timed). Its cost over a plain step's is the recoil's price per tear.
-/// With `local`, the recoil substeps only the torn edge's neighbourhood
-/// (SimulationParameters::local_recoil); without, the whole yarn.
+/// The step right after a tear, which resolves the recoil: the settled yarn's end pulled at twice
+/// the breaking force until it tears, then that state stepped once (copying it back is not
+/// timed). Its cost over a plain step's is the recoil's price per tear. With `local`, the yarn
+/// the release wave reaches is taken through it (SimulationParameters::local_recoil,
+/// integrateRecoilWave()); without, the whole yarn in recoil_substeps substeps.
 void stepAfterTear(benchmark::State& state, bool local) {
   Simulator torn = settledYarn(static_cast<int>(state.range(0)));
   SimulationParameters parameters = torn.parameters();

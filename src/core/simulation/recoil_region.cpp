@@ -110,6 +110,7 @@ RecoilRegion RecoilRegion::around(const Scene& scene, const std::vector<std::uin
     const bool boundary = !vertices.isSupport(v) && distance[v] >= reach;
     region.vertices.push_back(static_cast<std::uint32_t>(v));
     region.boundary.push_back(boundary ? 1 : 0);
+    region.distance.push_back(distance[v]);
     own[v] = boundary ? 0 : 1;
   }
   const EdgeSet& edges = scene.edges;
@@ -124,8 +125,7 @@ RecoilRegion RecoilRegion::around(const Scene& scene, const std::vector<std::uin
   return region;
 }
 
-Scene RecoilRegion::subScene(const Scene& scene,
-                             const std::vector<Eigen::Vector3d>& boundary_target) const {
+Scene RecoilRegion::subScene(const Scene& scene) const {
   Scene sub;
   sub.yarns = scene.yarns;
   for (Yarn& yarn : sub.yarns) yarn.fabric = -1;
@@ -133,10 +133,6 @@ Scene RecoilRegion::subScene(const Scene& scene,
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     local[vertices[i]] = static_cast<std::int64_t>(i);
     copyVertex(scene.vertices, vertices[i], sub.vertices);
-    if (boundary[i]) {
-      sub.vertices.motion[i] = VertexMotion::kKinematic;
-      sub.vertices.kinematic_target[i] = boundary_target[i];
-    }
   }
   for (std::uint32_t e : edges) {
     copyEdge(scene.edges, e, static_cast<std::uint32_t>(local[scene.edges.vertex_a[e]]),

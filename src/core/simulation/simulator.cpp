@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -15,6 +16,7 @@
 #include "yarn_tearing/core/simulation/held_target_limit.hpp"
 #include "yarn_tearing/core/simulation/nonfinite_recovery.hpp"
 #include "yarn_tearing/core/simulation/recoil_region.hpp"
+#include "yarn_tearing/core/simulation/recoil_wave.hpp"
 
 namespace yarn_tearing {
 namespace {
@@ -25,19 +27,13 @@ namespace {
 /// (doc/method.md, "Recoil substeps").
 constexpr double kRecoilGrowth = 4.0;
 
-/// A local recoil substeps the yarn within this many times the elastic wave's travel, c t, of a
+/// A local recoil takes the yarn within this many times the elastic wave's travel, c t, of a
 /// tear [-] ...
 constexpr double kRecoilReach = 1.25;
-/// ... and this many of the torn edge's rest lengths beyond [-]: each implicit substep spreads
-/// the front a few edges ahead of c t, and the boundary vertices move on at their velocity
-/// while their neighbours recoil. Measured against the whole scene's substeps
-/// (local_recoil_test): 1.0 c t or 8 edges lose 0.1-2 % of the kinetic energy, 1.25 c t and 24
-/// edges keep it within 0.02 %.
+/// ... and this many of the torn edge's rest lengths beyond [-] through the release wave: its
+/// explicit substeps carry a front one edge a substep, up to c t / 0.97, and the boundary
+/// vertices move on unaffected while their neighbours recoil.
 constexpr double kRecoilMarginEdges = 24.0;
-/// A local recoil grows its region with the wave: the step in this many equal stages (fewer
-/// when recoil_substeps is not a multiple), each substepping the yarn within reach of the tear
-/// at the stage's end [-]; the yarn the wave has not reached moves on as it did.
-constexpr int kRecoilStages = 8;
 
 void requireVertex(const Scene& scene, std::uint32_t vertex) {
   if (vertex >= scene.vertices.size()) {
@@ -263,8 +259,9 @@ bool Simulator::recoilLocally(const std::vector<std::uint32_t>& torn) {
   const std::vector<Eigen::Vector3d> start_support = support_force_;
   const std::size_t start_events = pending_events_.size();
   const double start_time = time_;
-  const bool done =
-      stepAroundRegion(region, start) && substepRegion(region, torn, start, start_tearing);
+  const std::vector<Eigen::Vector3d> acceleration = startAccelerations(parameters_, start);
+  const bool done = stepAroundRegion(region, start, acceleration) &&
+                    propagateRecoilWave(region, torn, start, acceleration, start_tearing);
   if (done) return true;
   scene_ = start;
   resetWorkspace();
@@ -277,98 +274,110 @@ bool Simulator::recoilLocally(const std::vector<std::uint32_t>& torn) {
   return false;
 }
 
-bool Simulator::stepAroundRegion(const RecoilRegion& region, const Scene& start) {
+bool Simulator::stepAroundRegion(const RecoilRegion& region, const Scene& start,
+                                 const std::vector<Eigen::Vector3d>& acceleration) {
   VertexSet& vertices = scene_.vertices;
-  for (std::size_t i = 0; i < region.vertices.size(); ++i) {
-    if (!region.boundary[i]) continue;
-    const std::uint32_t v = region.vertices[i];
+  for (std::uint32_t v : region.vertices) {
+    if (vertices.motion[v] != VertexMotion::kFree) continue;
     vertices.motion[v] = VertexMotion::kKinematic;
-    vertices.kinematic_target[v] = unaffectedPosition(start, v, parameters_.time_step);
+    vertices.kinematic_target[v] =
+        unaffectedPosition(start, acceleration, v, parameters_.time_step);
   }
+  // The region's edges sit this step out: the wave takes them.
+  for (std::uint32_t e : region.edges) scene_.edges.broken[e] = 1;
   const bool converged = advance(true);
-  for (std::size_t i = 0; i < region.vertices.size(); ++i) {
-    if (!region.boundary[i]) continue;
-    const std::uint32_t v = region.vertices[i];
-    vertices.motion[v] = start.vertices.motion[v];
+  for (std::uint32_t e : region.edges) scene_.edges.broken[e] = 0;
+  for (std::uint32_t v : region.vertices) {
+    if (start.vertices.motion[v] != VertexMotion::kFree) continue;
+    vertices.motion[v] = VertexMotion::kFree;
     vertices.kinematic_target[v] = start.vertices.kinematic_target[v];
     support_force_[v].setZero();
   }
   return converged && health_.breaks == 0 && health_.restored_yarns.empty();
 }
 
-Eigen::Vector3d Simulator::unaffectedPosition(const Scene& start, std::uint32_t v,
-                                              double elapsed) const {
+Eigen::Vector3d Simulator::unaffectedPosition(const Scene& start,
+                                              const std::vector<Eigen::Vector3d>& acceleration,
+                                              std::uint32_t v, double elapsed) const {
   const VertexSet& vertices = start.vertices;
   if (vertices.motion[v] == VertexMotion::kPinned) return vertices.position[v];
   if (vertices.motion[v] == VertexMotion::kKinematic) {
     const double fraction = elapsed / parameters_.time_step;
     return vertices.position[v] + fraction * (vertices.kinematic_target[v] - vertices.position[v]);
   }
-  return vertices.position[v] + elapsed * vertices.velocity[v];
+  return vertices.position[v] + elapsed * vertices.velocity[v] +
+         (0.5 * elapsed * elapsed) * acceleration[v];
 }
 
-int Simulator::recoilStages() const {
-  for (int stages = kRecoilStages; stages > 1; --stages) {
-    if (parameters_.recoil_substeps % stages == 0) return stages;
+std::vector<double> Simulator::waveArrival(const RecoilRegion& region,
+                                           const std::vector<std::uint32_t>& torn) const {
+  const double infinite = std::numeric_limits<double>::infinity();
+  std::vector<double> arrival(region.vertices.size(), infinite);
+  for (std::size_t i = 0; i < region.vertices.size(); ++i) {
+    if (region.boundary[i]) continue;
+    for (std::uint32_t e : torn) {
+      // The inverse of recoilReach(): when the reach from this tear covers the vertex.
+      const Material& material = scene_.yarns[scene_.edges.yarn[e]].material;
+      const double speed = std::sqrt(material.curve.youngsModulus() / material.density);
+      const double margin = kRecoilMarginEdges * scene_.edges.original_rest_length[e];
+      arrival[i] = std::min(arrival[i],
+                            std::max(0.0, (region.distance[i] - margin) / (kRecoilReach * speed)));
+    }
   }
-  return 1;
+  return arrival;
 }
 
-bool Simulator::substepRegion(const RecoilRegion& region, const std::vector<std::uint32_t>& torn,
-                              const Scene& start, const Tearing& start_tearing) {
-  const int stages = recoilStages();
-  const double dt = parameters_.time_step;
-  SimulationParameters stage_parameters = parameters_;
-  stage_parameters.time_step = dt / stages;
-  stage_parameters.recoil_substeps = parameters_.recoil_substeps / stages;
-  Scene grown = start;  // the region's vertices and edges as the stages have left them
-  std::vector<std::uint8_t> substepped(start.vertices.size(), 0);
-  StepHealth whole;
-  whole.projection_iterations = 0;
-  int substeps = 0;
-  for (int stage = 0; stage < stages; ++stage) {
-    const double begin = dt * stage / stages;
-    const double end = dt * (stage + 1) / stages;
-    const RecoilRegion part =
-        stage + 1 == stages ? region : RecoilRegion::around(grown, torn, recoilReach(torn, end));
-    std::vector<Eigen::Vector3d> target(part.vertices.size(), Eigen::Vector3d::Zero());
-    for (std::size_t i = 0; i < part.vertices.size(); ++i) {
-      const std::uint32_t v = part.vertices[i];
-      // A vertex the wave has not reached yet moves as it did; the held ones as they are led.
-      if (!substepped[v]) grown.vertices.position[v] = unaffectedPosition(start, v, begin);
-      if (part.boundary[i]) target[i] = unaffectedPosition(start, v, end);
-      if (grown.vertices.motion[v] == VertexMotion::kKinematic) {
-        grown.vertices.kinematic_target[v] = unaffectedPosition(start, v, end);
-      }
-    }
-    std::optional<Simulator> built;
-    try {
-      built.emplace(stage_parameters, part.subScene(grown, target));
-    } catch (const std::invalid_argument&) {
-      return false;  // a sub-scene that does not validate: the whole scene is substepped instead
-    }
-    Simulator& local = *built;
-    local.work_.tearing = start_tearing.restrictedTo(part.vertices);
-    local.time_ = time_ - dt + begin;
-    local.advanceInSubsteps(true);
-    if (local.health_.breaks > 0 || !local.health_.restored_yarns.empty()) return false;
-    accumulateHealth(local.health_, whole);
-    substeps += local.health_.substeps;
-    part.writeBack(local.scene_, grown);
-    for (std::size_t i = 0; i < part.vertices.size(); ++i) {
-      if (!part.boundary[i]) substepped[part.vertices[i]] = 1;
-    }
-    if (stage + 1 < stages) continue;
-    part.writeBack(local.scene_, scene_);
-    for (std::size_t i = 0; i < part.vertices.size(); ++i) {
-      if (!part.boundary[i]) support_force_[part.vertices[i]] = local.support_force_[i];
-    }
+bool Simulator::propagateRecoilWave(const RecoilRegion& region,
+                                    const std::vector<std::uint32_t>& torn, const Scene& start,
+                                    const std::vector<Eigen::Vector3d>& acceleration,
+                                    const Tearing& start_tearing) {
+  std::vector<Eigen::Vector3d> local_acceleration;
+  for (std::uint32_t v : region.vertices) local_acceleration.push_back(acceleration[v]);
+  std::optional<Simulator> built;
+  try {
+    built.emplace(parameters_, region.subScene(start));
+  } catch (const std::invalid_argument&) {
+    return false;  // a sub-scene that does not validate: the whole scene is substepped instead
   }
+  Simulator& local = *built;
+  local.work_.tearing = start_tearing.restrictedTo(region.vertices);
+  local.time_ = time_ - parameters_.time_step;
+  if (!local.advanceWave(waveArrival(region, torn), local_acceleration)) return false;
+  if (local.health_.breaks > 0 || !local.health_.restored_yarns.empty()) return false;
+  region.writeBack(local.scene_, scene_);
+  for (std::size_t i = 0; i < region.vertices.size(); ++i) {
+    if (!region.boundary[i]) support_force_[region.vertices[i]] = local.support_force_[i];
+  }
+  StepHealth whole = local.health_;
   accumulateHealth(health_, whole);  // the rest of the scene's step
-  whole.substeps = substeps;
+  whole.substeps = local.health_.substeps;
   whole.substepped_vertices = region.vertices.size();
   health_ = whole;
   recoil_pending_ = false;
+  return true;
+}
+
+bool Simulator::advanceWave(const std::vector<double>& arrival,
+                            const std::vector<Eigen::Vector3d>& start_acceleration) {
+  const std::vector<double> no_springs(scene_.edges.size(), 0.0);
+  accumulateExplicitForces(parameters_, scene_.vertices, no_springs, scene_.edges, work_.force);
+  work_.start_position = scene_.vertices.position;
+  work_.start_velocity = scene_.vertices.velocity;
+  const RecoilWaveResult wave =
+      integrateRecoilWave(parameters_, arrival, start_acceleration, parameters_.time_step, scene_,
+                          work_.constraint_tension);
+  if (!wave.completed) return false;
+  health_ = StepHealth{};
+  health_.projection_iterations = 0;
+  estimateTensions();
+  // The force balance over the whole step is no check on a wave resolved within it.
+  health_.tension_residual = 0.0;
+  updateMaterial();
+  time_ += parameters_.time_step;
+  const std::size_t events_before = pending_events_.size();
+  tear();
+  restoreNonFiniteYarns(events_before);
+  health_.substeps = wave.substeps;
   return true;
 }
 

@@ -16,9 +16,12 @@ namespace yarn_tearing {
 struct RecoilRegion {
   /// Global ids of the region's vertices, ascending (a sub-scene's local ids follow this order).
   std::vector<std::uint32_t> vertices;
-  /// Per region vertex: 1 where the walk stopped at a free vertex, which the region's substeps
-  /// move along a given path (the rest of the scene's step), 0 for the region's own vertices.
+  /// Per region vertex: 1 where the walk stopped at a free vertex, which the recoil leaves on
+  /// its unaffected path (the rest of the scene's step), 0 for the region's own vertices.
   std::vector<std::uint8_t> boundary;
+  /// Per region vertex: its rest-length (L0) distance from the nearest end of a torn edge along
+  /// the walk [m].
+  std::vector<double> distance;
   /// Global ids of the intact edges with at least one end among the region's own vertices,
   /// ascending; both their ends are region vertices.
   std::vector<std::uint32_t> edges;
@@ -34,9 +37,8 @@ struct RecoilRegion {
                              double reach);
 
   /// The region as a scene of its own (the scene's yarns and materials, no fabrics): its
-  /// vertices and edges with all their state, boundary vertices kinematic with targets
-  /// `boundary_target` [m] (per region vertex; read at boundary vertices only).
-  Scene subScene(const Scene& scene, const std::vector<Eigen::Vector3d>& boundary_target) const;
+  /// vertices and edges with all their state.
+  Scene subScene(const Scene& scene) const;
 
   /// Copies the state of the region's own vertices and of its edges from `sub` (a subScene()
   /// after its step) back into `scene`.

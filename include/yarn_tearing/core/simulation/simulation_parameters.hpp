@@ -66,11 +66,13 @@ struct SimulationParameters {
   /// wave has crossed the torn pieces, the rest of it in one; a step whose projection does not
   /// converge is taken again in recoil_substeps equal substeps.
   int recoil_substeps = 96;
-  /// Substep only the neighbourhood of a yarn's tear (RecoilRegion: the yarn within the elastic
-  /// wave's reach over the step, c dt of rest length, and a margin), the rest of the scene in one
-  /// step with the region's boundary moving on at its velocity; false substeps the whole scene.
-  /// A tear in a fabric, a scene with obstacles, a region of most of the scene, or a further tear
-  /// or unconverged projection in the step substep the whole scene either way.
+  /// Take only the neighbourhood of a yarn's tear (RecoilRegion: the yarn within the elastic
+  /// wave's reach over the step, c dt of rest length, and a margin) through the step after it, as
+  /// the release wave (integrateRecoilWave()), the rest of the scene in one step with the region's
+  /// boundary moving on as it did; false substeps the whole scene. A tear in a fabric, a scene
+  /// with obstacles, a region of most of the scene, an edge drawn to its breaking length within
+  /// the wave, or a further tear or unconverged projection in the step substep the whole scene
+  /// either way.
   bool local_recoil = true;
   /// Use the general sparse solver even for chains (the banded O(N) path is otherwise chosen).
   bool force_general_solver = false;

@@ -115,7 +115,7 @@ class Simulator {
   void advanceInSubsteps(bool recoil);
   /// The step after the tears of `torn` (global edge ids) with only their RecoilRegion in
   /// substeps, the rest of the scene in one step with the region's boundary vertices moving on
-  /// at their velocities (stepAroundRegion(), substepRegion()). Returns false, with nothing
+  /// at their velocities (stepAroundRegion(), propagateRecoilWave()). Returns false, with nothing
   /// changed, when the whole scene has to be substepped instead
   /// (SimulationParameters::local_recoil).
   bool recoilLocally(const std::vector<std::uint32_t>& torn);
@@ -125,17 +125,31 @@ class Simulator {
   double recoilReach(const std::vector<std::uint32_t>& torn, double duration) const;
   /// The whole scene's step (from `start`, the scene as it began) with the boundary vertices of
   /// `region` held on their unaffectedPosition(); false when it did not converge or tore.
-  bool stepAroundRegion(const RecoilRegion& region, const Scene& start);
+  bool stepAroundRegion(const RecoilRegion& region, const Scene& start,
+                        const std::vector<Eigen::Vector3d>& acceleration);
   /// Where vertex `v` of `start` is `elapsed` [s] into the step if the recoil does not reach it
-  /// [m]: on at its velocity, or led (kinematic) or pinned.
-  Eigen::Vector3d unaffectedPosition(const Scene& start, std::uint32_t v, double elapsed) const;
-  /// The stages a local recoil grows its region in [-].
-  int recoilStages() const;
-  /// Substeps `region` from `start` (tearing state `start_tearing`) in recoilStages() stages of
-  /// growing regions and writes it over the step stepAroundRegion() took; false when a substep
-  /// tore or left a non-finite value.
-  bool substepRegion(const RecoilRegion& region, const std::vector<std::uint32_t>& torn,
-                     const Scene& start, const Tearing& start_tearing);
+  /// [m]: on at its velocity and start `acceleration` [m/s^2, per vertex], or led (kinematic) or
+  /// pinned.
+  Eigen::Vector3d unaffectedPosition(const Scene& start,
+                                     const std::vector<Eigen::Vector3d>& acceleration,
+                                     std::uint32_t v, double elapsed) const;
+  /// When each vertex of `region` comes within the recoil's reach of a tear of `torn`
+  /// (recoilReach()) [s from the step's start]; infinite at the boundary.
+  std::vector<double> waveArrival(const RecoilRegion& region,
+                                  const std::vector<std::uint32_t>& torn) const;
+  /// Takes `region` from `start` (tearing state `start_tearing`, start accelerations
+  /// `acceleration` [m/s^2, per scene vertex]) through the step as the recoil wave
+  /// (advanceWave()) and writes it over the step stepAroundRegion() took; false when it tore or
+  /// left a non-finite value.
+  bool propagateRecoilWave(const RecoilRegion& region, const std::vector<std::uint32_t>& torn,
+                           const Scene& start, const std::vector<Eigen::Vector3d>& acceleration,
+                           const Tearing& start_tearing);
+  /// Stages 1 and 4-6 over parameters_.time_step with stages 2-3 replaced by
+  /// integrateRecoilWave() (free vertices on their unaffected paths, from `start_acceleration`
+  /// [m/s^2], until `arrival` [s]); false, with the scene part-way, when an edge reached its
+  /// breaking strain within the step.
+  bool advanceWave(const std::vector<double>& arrival,
+                   const std::vector<Eigen::Vector3d>& start_acceleration);
   /// Moves the kinematic vertices' targets to `fraction` [-] of the way from the step's start.
   void setSubstepTargets(double fraction);
   void accumulateForces();
