@@ -25,9 +25,9 @@ struct StepHealth {
   /// state (Simulator::step); empty in a healthy step.
   std::vector<std::uint32_t> restored_yarns;
   /// Substeps the step was taken in [-]: 1; after a tear, the fine substeps of the unloading plus
-  /// one for the rest of the step; recoil_substeps when the whole step's projection did not
-  /// converge (the other fields are then the worst substep's, breaks and restored_yarns their
-  /// union).
+  /// those growing to the step's end, or the explicit substeps of a local recoil's wave
+  /// (integrateRecoilWave()); recoil_substeps when the whole step's projection did not converge
+  /// (the other fields are then the worst substep's, breaks and restored_yarns their union).
   int substeps = 1;
   /// Vertices those substeps moved [-]: the scene's, or a local recoil's region
   /// (SimulationParameters::local_recoil); 0 for a step taken in one.
