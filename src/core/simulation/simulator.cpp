@@ -291,6 +291,8 @@ bool Simulator::stepAroundRegion(const RecoilRegion& region, const Scene& start,
     if (start.vertices.motion[v] != VertexMotion::kFree) continue;
     vertices.motion[v] = VertexMotion::kFree;
     vertices.kinematic_target[v] = start.vertices.kinematic_target[v];
+    // The path's velocity at the step's end, not the step's mean (a boundary vertex keeps it).
+    vertices.velocity[v] = start.vertices.velocity[v] + parameters_.time_step * acceleration[v];
     support_force_[v].setZero();
   }
   return converged && health_.breaks == 0 && health_.restored_yarns.empty();
