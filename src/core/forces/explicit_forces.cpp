@@ -2,13 +2,18 @@
 
 namespace yarn_tearing {
 
-void accumulateExplicitForces(const SimulationParameters& parameters, const VertexSet& vertices,
-                              const std::vector<double>& spring_constant, EdgeSet& edges,
+void accumulateExternalForces(const SimulationParameters& parameters, const VertexSet& vertices,
                               std::vector<Eigen::Vector3d>& force) {
   for (std::size_t v = 0; v < vertices.size(); ++v) {
     force[v] = vertices.mass[v] * parameters.gravity + vertices.applied_force[v] -
                parameters.air_damping * vertices.damping_length[v] * vertices.velocity[v];
   }
+}
+
+void accumulateExplicitForces(const SimulationParameters& parameters, const VertexSet& vertices,
+                              const std::vector<double>& spring_constant, EdgeSet& edges,
+                              std::vector<Eigen::Vector3d>& force) {
+  accumulateExternalForces(parameters, vertices, force);
   for (std::size_t e = 0; e < edges.size(); ++e) {
     edges.spring_tension[e] = 0.0;
     if (!edges.intact(e)) continue;

@@ -6,6 +6,8 @@
 #include <limits>
 #include <utility>
 
+#include "yarn_tearing/core/forces/explicit_forces.hpp"
+
 namespace yarn_tearing {
 namespace {
 
@@ -78,13 +80,6 @@ std::vector<std::uint32_t> edgesAtStop(const EdgeSet& edges,
 double springTension(double k, double rest, double length) {
   const double stretch = length - rest;
   return stretch > 0.0 ? k * stretch : 0.0;
-}
-
-/// Gravity, the applied force and air damping on vertex v at its current velocity [N].
-Eigen::Vector3d externalForce(const SimulationParameters& p, const VertexSet& vertices,
-                              std::size_t v) {
-  return vertices.mass[v] * p.gravity + vertices.applied_force[v] -
-         p.air_damping * vertices.damping_length[v] * vertices.velocity[v];
 }
 
 /// The explicit integration's state: which vertices it moves, where the others are.
@@ -166,10 +161,12 @@ std::vector<std::uint32_t> inOrderOf(const std::vector<double>& time) {
 
 /// The region's edges as the wave's springs, and the forces that do not depend on them.
 struct Springs {
-  std::vector<double> k;                      ///< stiffness E A f / L0 per edge (0: torn) [N/m]
-  std::vector<double> breaking_length;        ///< L0 (1 + eps_b) per edge [m]
-  std::vector<std::uint32_t> stops;           ///< edges held at their breaking length at the start
-  std::vector<double> tear_length;            ///< length at which an edge tears in the wave [m]
+  std::vector<double> k;                ///< stiffness E A f / L0 per edge (0: torn) [N/m]
+  std::vector<double> breaking_length;  ///< L0 (1 + eps_b) per edge [m]
+  std::vector<std::uint32_t> stops;     ///< edges held at their breaking length at the start
+  std::vector<double> tear_length;      ///< length at which an edge tears in the wave [m]
+  // accumulateExternalForces() split for the substeps' loop: what stays over the step, and what
+  // follows the velocity.
   std::vector<Eigen::Vector3d> steady_force;  ///< gravity and applied force per vertex [N]
   std::vector<double> drag;                   ///< air damping per vertex [N s/m]
 };
@@ -282,8 +279,7 @@ std::vector<Eigen::Vector3d> startAccelerations(const SimulationParameters& para
   const EdgeSet& edges = scene.edges;
   const std::vector<double> k = springStiffness(scene);
   std::vector<Eigen::Vector3d> force(vertices.size());
-  for (std::size_t v = 0; v < vertices.size(); ++v)
-    force[v] = externalForce(parameters, vertices, v);
+  accumulateExternalForces(parameters, vertices, force);
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const Eigen::Vector3d d =
         vertices.position[edges.vertex_b[e]] - vertices.position[edges.vertex_a[e]];

@@ -361,8 +361,9 @@ bool Simulator::propagateRecoilWave(const RecoilRegion& region,
 
 bool Simulator::advanceWave(const std::vector<double>& arrival,
                             const std::vector<Eigen::Vector3d>& start_acceleration) {
-  const std::vector<double> no_springs(scene_.edges.size(), 0.0);
-  accumulateExplicitForces(parameters_, scene_.vertices, no_springs, scene_.edges, work_.force);
+  accumulateExternalForces(parameters_, scene_.vertices, work_.force);
+  // The wave's springs are the whole edge: no soft spring of its own.
+  std::fill(scene_.edges.spring_tension.begin(), scene_.edges.spring_tension.end(), 0.0);
   work_.start_position = scene_.vertices.position;
   work_.start_velocity = scene_.vertices.velocity;
   const RecoilWaveResult wave =

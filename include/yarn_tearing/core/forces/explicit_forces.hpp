@@ -9,6 +9,12 @@
 
 namespace yarn_tearing {
 
+/// The forces on each vertex [N] into `force` (sized to the vertices) that no edge exerts: gravity
+/// m g, the applied force and linear air damping -c l v (c = air_damping [N s/m^2], l the
+/// vertex's share of yarn length [m]).
+void accumulateExternalForces(const SimulationParameters& parameters, const VertexSet& vertices,
+                              std::vector<Eigen::Vector3d>& force);
+
 /// Stage 1: the non-constraint force on each vertex [N] into `force` (sized to the vertices):
 /// gravity m g, the applied force, linear air damping -c l v (c = air_damping [N s/m^2], l the
 /// vertex's share of yarn length [m]) and the tension-only soft springs along the intact edges,
