@@ -304,16 +304,18 @@ RecoilWaveResult integrateRecoilWave(const SimulationParameters& parameters,
   const EdgeSet& edges = scene.edges;
   const Springs springs = springsOf(scene, parameters);
   RecoilWaveResult result;
-  result.substeps = std::max(
-      1, static_cast<int>(std::ceil(duration / (kCourant * stableSubstep(scene, springs.k)))));
-  const double h = duration / result.substeps;
+  // Substeps at kCourant of the limit, the last one what remains: a chain's front rings by the
+  // gap between the substep and its limit (3 % at 0.97, 7 % at 0.9), whatever the step's length.
+  const double full = std::min(duration, kCourant * stableSubstep(scene, springs.k));
+  result.substeps = std::max(1, static_cast<int>(std::ceil(duration / full - 1.0e-9)));
   const WaveSchedule schedule = scheduleOf(scene, springs.k, arrival);
   WaveState state(vertices, start_acceleration, duration);
   std::vector<Eigen::Vector3d> force(vertices.size(), Eigen::Vector3d::Zero());
   std::size_t moving = 0;  // schedule.vertices[0, moving) move
   std::size_t live = 0;    // schedule.edges[0, live) pull
   for (int s = 0; s < result.substeps; ++s) {
-    const double t = s * h;
+    const double t = s * full;
+    const double h = s + 1 < result.substeps ? full : duration - t;
     for (; moving < schedule.vertices.size() && schedule.vertexArrival(moving) <= t; ++moving) {
       state.startMoving(schedule.vertices[moving], t, vertices);
     }

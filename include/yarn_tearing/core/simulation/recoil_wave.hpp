@@ -26,7 +26,8 @@ std::vector<Eigen::Vector3d> startAccelerations(const SimulationParameters& para
 /// the material's elastic springs (doc/method.md, "Recoil wave"): tension-only, T = k (l - L),
 /// k = E A f / L0 (f the edge's rate factor) and L its plastic rest length, the law the material
 /// update reads lengths by. Free vertices move by symplectic Euler under gravity, applied forces,
-/// air damping and those springs, in equal substeps within the explicit stability limit; until
+/// air damping and those springs, in substeps of 0.97 of the explicit stability limit (the last
+/// one what remains of `duration`); until
 /// `arrival` [s from the step's start, per vertex; infinite: never] a free vertex moves on its
 /// unaffected path x0 + v0 t + a0 t^2 / 2 (a0 = `start_acceleration` [m/s^2]), pinned vertices
 /// stay and kinematic ones move linearly to their targets. An edge held at its breaking length
