@@ -1,12 +1,42 @@
-// What the benchmark files share: the timing loops of one simulation step and of a window of
-// steps from a given state (a scene's first tear, a time).
+// What the benchmark files share: the hanging fabric, the timing loops of one simulation step and
+// of a window of steps from a given state (a scene's first tear, a time).
 #pragma once
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+
 #include "yarn_tearing/core/simulation/simulator.hpp"
 
 namespace yarn_tearing {
+
+/// A cotton plain weave of side x side vertices (0.1 mm yarns, `spacing` [m] between yarns, no
+/// crimp), hanging along -z from its pinned first row.
+inline FabricSpec benchFabric(int side, double spacing) {
+  FabricSpec spec;
+  spec.name = "bench";
+  spec.ends = side;
+  spec.picks = side;
+  spec.warp_length = spacing * (side - 1);
+  spec.weft_length = spacing * (side - 1);
+  spec.warp.material.curve = StressStrainCurve({{0.0, 0.0}, {0.015, 1.14e8}, {0.071, 4.86e8}});
+  spec.weft = spec.warp;
+  spec.pinned_sides = {FabricSide::kFirstRow};
+  return spec;
+}
+
+/// The largest stretch of an intact edge over its original rest length, |x_b - x_a| / L0 - 1 [-].
+inline double maxStrain(const Scene& scene) {
+  const EdgeSet& edges = scene.edges;
+  const std::vector<Eigen::Vector3d>& x = scene.vertices.position;
+  double strain = 0.0;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (!edges.intact(e)) continue;
+    const double length = (x[edges.vertex_b[e]] - x[edges.vertex_a[e]]).norm();
+    strain = std::max(strain, length / edges.original_rest_length[e] - 1.0);
+  }
+  return strain;
+}
 
 /// Times single steps of `sim`; reports the last step's projection iterations
 /// ("iterations/step").
