@@ -46,18 +46,9 @@ Motion motionOf(const Scene& scene, const std::vector<Eigen::Vector3d>* referenc
 class DrawnYarnRecoil : public ::testing::TestWithParam<double> {};
 
 TEST_P(DrawnYarnRecoil, ThePiecesFlyAsTheReleaseWaveHasIt) {
-  YarnSpec spec = hangingYarn();
-  spec.num_vertices = 1200;
-  spec.length = 0.0125 * (spec.num_vertices - 1);
-  spec.direction = Eigen::Vector3d::UnitX();
-  Scene scene = buildScene({spec});
+  const YarnSpec spec = hangingYarn();
   const std::uint32_t weak = 600;
-  const double factor = 0.2;
-  scene.edges.strength_factor[weak] = factor;
-  const StressStrainCurve& curve = spec.material.curve;
-  const double breaking_strain = curve.strainAtStress(factor * curve.breakingStress());
-  for (Eigen::Vector3d& x : scene.vertices.position) x *= 1.0 + 0.99 * breaking_strain;
-  Simulator sim(parametersWithoutGravity(GetParam()), scene);
+  Simulator sim(parametersWithoutGravity(GetParam()), weakEdgeYarnScene(1200, weak, 0.2));
   const std::uint32_t drawn = sim.scene().globalVertex(0, -1);
   const Eigen::Vector3d draw(0.2, 0.0, 0.0);
   const auto drawOn = [&sim, drawn, &draw] {
@@ -79,6 +70,7 @@ TEST_P(DrawnYarnRecoil, ThePiecesFlyAsTheReleaseWaveHasIt) {
   EXPECT_GT(sim.lastHealth().substepped_vertices, 0u);
   EXPECT_LT(2 * sim.lastHealth().substepped_vertices, sim.scene().vertices.size());
 
+  const StressStrainCurve& curve = spec.material.curve;
   const double stiffness = curve.youngsModulus() * spec.area();  // E A [N]
   const double speed = std::sqrt(curve.youngsModulus() / spec.material.density);
   const double t = sim.parameters().time_step;

@@ -56,6 +56,22 @@ inline YarnSpec hangingYarn(const Material& material = cottonLike()) {
   return spec;
 }
 
+/// hangingYarn() with `num_vertices` [-] 12.5 mm apart along +x, vertex 0 pinned, its edge
+/// `weak` at `factor` [-] of the yarn's strength, and the yarn stretched to 0.99 of that edge's
+/// breaking strain (in its elastic range for a factor of a fifth).
+inline Scene weakEdgeYarnScene(int num_vertices, std::uint32_t weak, double factor) {
+  YarnSpec spec = hangingYarn();
+  spec.num_vertices = num_vertices;
+  spec.length = 0.0125 * (num_vertices - 1);
+  spec.direction = Eigen::Vector3d::UnitX();
+  Scene scene = buildScene({spec});
+  scene.edges.strength_factor[weak] = factor;
+  const StressStrainCurve& curve = spec.material.curve;
+  const double breaking_strain = curve.strainAtStress(factor * curve.breakingStress());
+  for (Eigen::Vector3d& x : scene.vertices.position) x *= 1.0 + 0.99 * breaking_strain;
+  return scene;
+}
+
 inline SimulationParameters parametersWithoutGravity(double dt = 1.0e-3) {
   SimulationParameters p;
   p.time_step = dt;

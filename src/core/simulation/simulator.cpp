@@ -17,6 +17,7 @@
 #include "yarn_tearing/core/simulation/nonfinite_recovery.hpp"
 #include "yarn_tearing/core/simulation/recoil_region.hpp"
 #include "yarn_tearing/core/simulation/recoil_wave.hpp"
+#include "yarn_tearing/core/simulation/release_run.hpp"
 
 namespace yarn_tearing {
 namespace {
@@ -26,6 +27,12 @@ namespace {
 /// growth slow enough for the Newton steps of a still-recoiling piece to converge
 /// (doc/method.md, "Recoil substeps").
 constexpr double kRecoilGrowth = 4.0;
+
+/// Fine substeps [-] a fabric's release wave must take to unload the torn yarn's loaded run for
+/// the recoil substeps to keep any of its motion; within fewer (a trouser tear's tip in a 2 mm
+/// weave at Δt = 1e-3) they damp it as one step does, at several times its cost
+/// (doc/method.md, "A fabric's short release").
+constexpr double kResolvedReleaseSubsteps = 2.0;
 
 /// A local recoil takes the yarn within this many times the elastic wave's travel, c t, of a
 /// tear [-] ...
@@ -131,7 +138,10 @@ void Simulator::step() {
   std::vector<std::uint32_t> torn;
   torn.swap(torn_edges_);
   if (recoil_pending_ && can_substep) {
-    if (!(parameters_.local_recoil && recoilLocally(torn))) advanceInSubsteps(true);
+    // A yarn's release wave, else recoil substeps, else (a fabric's short release) one step,
+    // substepped after all should it not converge.
+    const bool local = parameters_.local_recoil && recoilLocally(torn);
+    if (!local && (releaseResolvedBySubsteps(torn) || !advance(true))) advanceInSubsteps(true);
   } else if (!advance(can_substep)) {
     advanceInSubsteps(false);  // the whole step did not converge: taken again in substeps
   }
@@ -236,6 +246,17 @@ void Simulator::advanceInSubsteps(bool recoil) {
   whole.substepped_vertices = vertices.size();
   health_ = whole;
   recoil_pending_ = tore;
+}
+
+bool Simulator::releaseResolvedBySubsteps(const std::vector<std::uint32_t>& torn) const {
+  const auto in_a_yarn = [this](std::uint32_t e) { return scene_.fabricOfEdge(e) < 0; };
+  if (parameters_.substep_every_recoil || torn.empty() ||
+      std::any_of(torn.begin(), torn.end(), in_a_yarn)) {
+    return true;
+  }
+  const double fine = parameters_.time_step / parameters_.recoil_substeps;
+  return releaseCrossingTime(scene_, work_.gram.incidence(), torn) >=
+         kResolvedReleaseSubsteps * fine;
 }
 
 double Simulator::recoilReach(const std::vector<std::uint32_t>& torn, double duration) const {

@@ -64,15 +64,20 @@ struct SimulationParameters {
   /// runs through the pieces as a wave at sqrt(E / rho) (~2 km/s), far faster than a step
   /// resolves, so the step after a tear is taken in substeps of dt / recoil_substeps until the
   /// wave has crossed the torn pieces, the rest of it in one; a step whose projection does not
-  /// converge is taken again in recoil_substeps equal substeps.
+  /// converge is taken again in recoil_substeps equal substeps. A fabric's tear whose release
+  /// unloads the torn yarn's loaded run within two such substeps (a tear tip the crossing yarns
+  /// hold) is followed by a whole step (substep_every_recoil).
   int recoil_substeps = 96;
+  /// Substep the step after every fabric's tear, also where its release unloads the torn yarn's
+  /// loaded run within two substeps (Simulator; for comparing the two).
+  bool substep_every_recoil = false;
   /// Take only the neighbourhood of a yarn's tear (RecoilRegion: the yarn within the elastic
   /// wave's reach over the step, c dt of rest length, and a margin) through the step after it, as
   /// the release wave (integrateRecoilWave()), the rest of the scene in one step with the region's
   /// boundary moving on as it did; false substeps the whole scene. A tear in a fabric, a scene
   /// with obstacles, a region of most of the scene, an edge drawn to its breaking length within
-  /// the wave, or a further tear or unconverged projection in the step substep the whole scene
-  /// either way.
+  /// the wave, or a further tear or unconverged projection in the step take the whole scene's
+  /// step either way.
   bool local_recoil = true;
   /// Use the general sparse solver even for chains (the banded O(N) path is otherwise chosen).
   bool force_general_solver = false;

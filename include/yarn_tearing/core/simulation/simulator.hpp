@@ -113,12 +113,16 @@ class Simulator {
   /// the rest of the step is then taken in substeps growing in length, or in fine substeps again
   /// if one of those does not converge (doc/method.md, "Recoil substeps").
   void advanceInSubsteps(bool recoil);
-  /// The step after the tears of `torn` (global edge ids) with only their RecoilRegion in
-  /// substeps, the rest of the scene in one step with the region's boundary vertices moving on
-  /// at their velocities (stepAroundRegion(), propagateRecoilWave()). Returns false, with nothing
-  /// changed, when the whole scene has to be substepped instead
+  /// The step after the tears of `torn` (global edge ids) with only their RecoilRegion taken
+  /// through the release wave, the rest of the scene in one step with the region's boundary
+  /// vertices moving on their unaffected paths (stepAroundRegion(), propagateRecoilWave()).
+  /// Returns false, with nothing changed, when the whole scene has to be substepped instead
   /// (SimulationParameters::local_recoil).
   bool recoilLocally(const std::vector<std::uint32_t>& torn);
+  /// False when every tear of `torn` (global edge ids) is in a fabric and its release wave
+  /// unloads the torn yarn's loaded run (releaseCrossingTime()) within kResolvedReleaseSubsteps
+  /// fine substeps: the step after the tear is then taken whole, else in recoil substeps.
+  bool releaseResolvedBySubsteps(const std::vector<std::uint32_t>& torn) const;
   /// How far along its yarn a tear of `torn` is substepped `duration` [s] after it [m]: the
   /// elastic wave's travel in the fastest torn material and a margin for the implicit
   /// projection's spread of its front.
