@@ -77,9 +77,9 @@ int StiffNewtonStep::numberRows(const std::vector<double>& inverse_mass, const E
                                 const std::vector<std::uint8_t>& taut, const ContactSet* contacts) {
   // Rows in vertex order, each taut edge's row right after its later vertex's: a chain's system
   // is then banded, and the natural ordering factorizes it in O(N) without fill.
-  // On other graphs every movable edge has a row, a slack one an idle row (m_e = 0, its
-  // couplings stored as zeros): the pattern then holds while the taut set changes, and the
-  // factorization's symbolic analysis is kept (PatternCachedLdlt).
+  // On other graphs every edge with a free end has a row, a slack or torn one an idle row
+  // (m_e = 0, its couplings stored as zeros): the pattern then holds while the taut set changes
+  // and as edges tear, and the factorization's symbolic analysis is kept (PatternCachedLdlt).
   const std::size_t n = inverse_mass.size();
   const bool fixed_pattern = !banded_;
   vertex_row_.assign(n, -1);
@@ -96,7 +96,8 @@ int StiffNewtonStep::numberRows(const std::vector<double>& inverse_mass, const E
       if (std::max(edges.vertex_a[e], edges.vertex_b[e]) != v) continue;
       if (taut[e]) {
         edge_row_[e] = rows++;
-      } else if (fixed_pattern && (*movable_)[e]) {
+      } else if (fixed_pattern &&
+                 (inverse_mass[edges.vertex_a[e]] > 0.0 || inverse_mass[edges.vertex_b[e]] > 0.0)) {
         idle_row_[e] = rows++;
       }
     }
@@ -126,8 +127,8 @@ void StiffNewtonStep::chooseCondensation(const EdgeSet& edges, const EdgeInciden
     const bool plain_a = inverse_mass[edges.vertex_a[e]] == 0.0 || takesStartDirection(e, false);
     const bool plain_b = inverse_mass[edges.vertex_b[e]] == 0.0 || takesStartDirection(e, true);
     // By the ends' directions alone, taut or idle: the same vertices are eliminated, and the
-    // reduced system keeps its pattern, while the taut set changes.
-    plain_[e] = plain_a && plain_b;
+    // reduced system keeps its pattern, while the taut set changes. A torn edge stiffens nothing.
+    plain_[e] = (plain_a && plain_b) || !edges.intact(e);
   }
   const bool any =
       condensation_.choose(edges, incidence, vertex_row_, system_row_, plain_, rows) > 0;
@@ -423,7 +424,6 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
                             std::vector<double>& multiplier, ContactSet* contacts,
                             const StartDirections& start) {
   start_ = start;
-  movable_ = &movable;
   ++newton_steps_;
   for (std::size_t e = 0; e < edges.size(); ++e) taut[e] = taut[e] & movable[e];
   if (contacts != nullptr) {

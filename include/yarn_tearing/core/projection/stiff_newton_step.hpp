@@ -306,7 +306,8 @@ class StiffNewtonStep {
   std::vector<Eigen::Vector3d> previous_impulse_;  ///< per contact, before the solve [kg m]
   std::vector<int> vertex_row_;  ///< first row of each free vertex, -1 for supports
   std::vector<int> edge_row_;    ///< row of each taut edge, -1 otherwise
-  std::vector<int> idle_row_;    ///< row of each slack movable edge (not banded), -1 otherwise
+  /// Row of each slack or torn edge with a free end (not banded), -1 otherwise.
+  std::vector<int> idle_row_;
   /// Eliminates the vertices no edge stiffens from the general path's system (solveAssembled
   /// then condenses and expands); a held fabric's Newton system shrinks to about one row an edge.
   VertexCondensation condensation_;
@@ -329,7 +330,6 @@ class StiffNewtonStep {
   bool direct_ = false;
   /// Every entry added so far was the next of generalFactorization()'s last sequence.
   bool direct_listed_ = false;
-  const std::vector<std::uint8_t>* movable_ = nullptr;  ///< the movable edges of this apply
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> matrix_;
   Eigen::VectorXd rhs_;
