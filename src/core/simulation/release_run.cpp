@@ -29,7 +29,6 @@ std::uint32_t otherEnd(const EdgeSet& edges, std::uint32_t e, std::uint32_t v) {
 double runLength(const EdgeSet& edges, const EdgeIncidence& incidence, std::uint32_t torn,
                  std::uint32_t v, double threshold) {
   double length = 0.0;
-  std::uint32_t previous = torn;
   std::int64_t next = nextAlongYarn(edges, incidence, v, torn);
   // A run is at most the yarn's edge count long; the bound keeps a ring from looping.
   for (std::size_t walked = 0; next >= 0 && walked < edges.size(); ++walked) {
@@ -37,8 +36,7 @@ double runLength(const EdgeSet& edges, const EdgeIncidence& incidence, std::uint
     if (edges.tension[e] < threshold) break;
     length += edges.original_rest_length[e];
     v = otherEnd(edges, e, v);
-    previous = e;
-    next = nextAlongYarn(edges, incidence, v, previous);
+    next = nextAlongYarn(edges, incidence, v, e);
   }
   return length;
 }
