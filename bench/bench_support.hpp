@@ -1,4 +1,4 @@
-// What the benchmark files share: the hanging fabric, the timing loops of one simulation step and
+// What the benchmark files share: the cotton weaves, the timing loops of one simulation step and
 // of a window of steps from a given state (a scene's first tear, a time).
 #pragma once
 
@@ -10,17 +10,28 @@
 
 namespace yarn_tearing {
 
-/// A cotton plain weave of side x side vertices (0.1 mm yarns, `spacing` [m] between yarns, no
-/// crimp), hanging along -z from its pinned first row.
-inline FabricSpec benchFabric(int side, double spacing) {
+/// The benchmarks' cotton: E = 7.6 GPa up to 1.5 % strain, breaking at 7.1 % (486 MPa).
+inline StressStrainCurve cotton() {
+  return StressStrainCurve({{0.0, 0.0}, {0.015, 1.14e8}, {0.071, 4.86e8}});
+}
+
+/// A cotton plain weave of `ends` x `picks` vertices (0.1 mm yarns, `spacing` [m] between yarns,
+/// no crimp) in the xz plane hanging along -z, nothing pinned.
+inline FabricSpec plainWeave(int ends, int picks, double spacing) {
   FabricSpec spec;
-  spec.name = "bench";
-  spec.ends = side;
-  spec.picks = side;
-  spec.warp_length = spacing * (side - 1);
-  spec.weft_length = spacing * (side - 1);
-  spec.warp.material.curve = StressStrainCurve({{0.0, 0.0}, {0.015, 1.14e8}, {0.071, 4.86e8}});
+  spec.name = "patch";
+  spec.ends = ends;
+  spec.picks = picks;
+  spec.warp_length = spacing * (picks - 1);
+  spec.weft_length = spacing * (ends - 1);
+  spec.warp.material.curve = cotton();
   spec.weft = spec.warp;
+  return spec;
+}
+
+/// plainWeave() of side x side vertices hanging from its pinned first row.
+inline FabricSpec benchFabric(int side, double spacing) {
+  FabricSpec spec = plainWeave(side, side, spacing);
   spec.pinned_sides = {FabricSide::kFirstRow};
   return spec;
 }

@@ -28,7 +28,7 @@ constexpr double kPegRadius = 1.0e-3;  ///< [m] a 2 mm peg
 YarnSpec cottonYarn(int vertices, const Eigen::Vector3d& start) {
   YarnSpec spec;
   spec.name = "bench";
-  spec.material.curve = StressStrainCurve({{0.0, 0.0}, {0.015, 1.14e8}, {0.071, 4.86e8}});
+  spec.material.curve = cotton();
   spec.num_vertices = vertices;
   spec.length = kSegment * (vertices - 1);
   spec.start = start;

@@ -28,25 +28,6 @@
 namespace yarn_tearing {
 namespace {
 
-/// The cotton of the other benchmarks: r = 0.1 mm, E = 7.6 GPa up to 1.5 % strain.
-StressStrainCurve cotton() {
-  return StressStrainCurve({{0.0, 0.0}, {0.015, 1.14e8}, {0.071, 4.86e8}});
-}
-
-/// A cotton plain weave of `ends` x `picks` vertices, `spacing` [m] between yarns, in the xz plane
-/// hanging along -z, nothing pinned.
-FabricSpec plainWeave(int ends, int picks, double spacing) {
-  FabricSpec spec;
-  spec.name = "patch";
-  spec.ends = ends;
-  spec.picks = picks;
-  spec.warp_length = spacing * (picks - 1);
-  spec.weft_length = spacing * (ends - 1);
-  spec.warp.material.curve = cotton();
-  spec.weft = spec.warp;
-  return spec;
-}
-
 /// Steps `sim` for `seconds` of simulated time.
 void settle(Simulator& sim, double seconds) {
   while (sim.time() < seconds) sim.step();

@@ -22,7 +22,7 @@ namespace {
 YarnSpec benchYarn(int vertices) {
   YarnSpec spec;
   spec.name = "bench";
-  spec.material.curve = StressStrainCurve({{0.0, 0.0}, {0.015, 1.14e8}, {0.071, 4.86e8}});
+  spec.material.curve = cotton();
   spec.num_vertices = vertices;
   spec.length = 0.0125 * (vertices - 1);
   spec.pinned = {0};
