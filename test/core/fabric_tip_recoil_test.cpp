@@ -4,7 +4,6 @@
 // same tears with their recoil substepped.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <iostream>
 #include <vector>
 
@@ -15,17 +14,12 @@
 namespace yarn_tearing::test {
 namespace {
 
-/// The wave speed c = sqrt(E / rho) of `material` [m/s].
-double waveSpeed(const Material& material) {
-  return std::sqrt(material.curve.youngsModulus() / material.density);
-}
-
 /// The loaded run [m] of the yarn torn at `edge`: releaseCrossingTime() times c.
 double loadedRun(const Scene& scene, std::uint32_t edge) {
   EdgeIncidence incidence;
   incidence.build(scene.edges, scene.vertices.size());
   return releaseCrossingTime(scene, incidence, {edge}) *
-         waveSpeed(scene.yarns[scene.edges.yarn[edge]].material);
+         scene.yarns[scene.edges.yarn[edge]].material.waveSpeed();
 }
 
 /// A cotton weave of `ends` warp yarns by 16 picks, 2 mm between yarns, its first row held, with

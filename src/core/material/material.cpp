@@ -7,9 +7,9 @@
 
 namespace yarn_tearing {
 
-double Material::snapBackSpeed() const {
-  return std::sqrt(curve.youngsModulus() / density) * curve.breakingStrain();
-}
+double Material::waveSpeed() const { return std::sqrt(curve.youngsModulus() / density); }
+
+double Material::snapBackSpeed() const { return waveSpeed() * curve.breakingStrain(); }
 
 void Material::validate() const {
   if (!std::isfinite(density) || density <= 0.0) {

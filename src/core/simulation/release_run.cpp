@@ -1,7 +1,6 @@
 #include "yarn_tearing/core/simulation/release_run.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 namespace yarn_tearing {
 namespace {
@@ -58,9 +57,7 @@ double releaseCrossingTime(const Scene& scene, const EdgeIncidence& incidence,
     if (!(peak > 0.0)) continue;
     const double run = std::max(runLength(edges, incidence, e, a, 0.5 * peak),
                                 runLength(edges, incidence, e, b, 0.5 * peak));
-    const Material& material = scene.yarns[edges.yarn[e]].material;
-    const double speed = std::sqrt(material.curve.youngsModulus() / material.density);
-    longest = std::max(longest, run / speed);
+    longest = std::max(longest, run / scene.yarns[edges.yarn[e]].material.waveSpeed());
   }
   return longest;
 }

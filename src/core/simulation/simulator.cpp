@@ -1,7 +1,6 @@
 #include "yarn_tearing/core/simulation/simulator.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -262,8 +261,7 @@ bool Simulator::releaseResolvedBySubsteps(const std::vector<std::uint32_t>& torn
 double Simulator::recoilReach(const std::vector<std::uint32_t>& torn, double duration) const {
   double reach = 0.0;
   for (std::uint32_t e : torn) {
-    const Material& material = scene_.yarns[scene_.edges.yarn[e]].material;
-    const double speed = std::sqrt(material.curve.youngsModulus() / material.density);
+    const double speed = scene_.yarns[scene_.edges.yarn[e]].material.waveSpeed();
     reach = std::max(reach, kRecoilReach * speed * duration +
                                 kRecoilMarginEdges * scene_.edges.original_rest_length[e]);
   }
@@ -340,8 +338,7 @@ std::vector<double> Simulator::waveArrival(const RecoilRegion& region,
     if (region.boundary[i]) continue;
     for (std::uint32_t e : torn) {
       // The inverse of recoilReach(): when the reach from this tear covers the vertex.
-      const Material& material = scene_.yarns[scene_.edges.yarn[e]].material;
-      const double speed = std::sqrt(material.curve.youngsModulus() / material.density);
+      const double speed = scene_.yarns[scene_.edges.yarn[e]].material.waveSpeed();
       const double margin = kRecoilMarginEdges * scene_.edges.original_rest_length[e];
       arrival[i] = std::min(arrival[i],
                             std::max(0.0, (region.distance[i] - margin) / (kRecoilReach * speed)));

@@ -1,7 +1,6 @@
 #include "yarn_tearing/core/tearing/tearing.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 
 #include "yarn_tearing/core/tearing/state_at_tear.hpp"
@@ -16,8 +15,7 @@ double overstrain(const Scene& scene, std::size_t e) {
 
 /// c = sqrt(E / rho) of edge e's material [m/s]: how fast a tear's unloading runs through it.
 double waveSpeed(const Scene& scene, std::size_t e) {
-  const Material& material = scene.yarns[scene.edges.yarn[e]].material;
-  return std::sqrt(material.curve.youngsModulus() / material.density);
+  return scene.yarns[scene.edges.yarn[e]].material.waveSpeed();
 }
 
 }  // namespace

@@ -16,8 +16,10 @@ struct Material {
   /// Loading curve at the reference strain rate RateDependence::kReferenceStrainRate.
   StressStrainCurve curve{{{0.0, 0.0}, {0.01, 1.0e8}, {0.07, 3.0e8}}};
 
+  /// Its elastic wave speed c = sqrt(E / rho) [m/s]: how fast a tear's unloading runs through it.
+  double waveSpeed() const;
   /// The fastest a yarn of this material moves when released from its breaking strain [m/s]:
-  /// c * eps_b with c = sqrt(E / rho) its elastic wave speed (a snap-back).
+  /// c * eps_b with c its waveSpeed() (a snap-back).
   double snapBackSpeed() const;
   /// Throws std::invalid_argument naming the field unless density > 0 and
   /// 0 <= rate_sensitivity <= RateDependence::kMaxSensitivity.
