@@ -36,6 +36,45 @@ inline FabricSpec benchFabric(int side, double spacing) {
   return spec;
 }
 
+/// BM_FabricTearing's trouser tear: benchFabric() of side x side with 2 mm between yarns, a slit
+/// a quarter of the picks long up its middle, the two halves of its last row drawn apart along
+/// the weft at 0.1 m/s each.
+class TrouserTear {
+ public:
+  explicit TrouserTear(int side) : side_(side), start_(SimulationParameters{}, {}, {spec(side)}) {
+    const Scene& scene = start_.scene();
+    for (int c = 0; c < side; ++c) {
+      origin_.push_back(scene.vertices.position[scene.fabricVertex(0, -1, c)]);
+    }
+  }
+
+  /// The scene at its start, to be stepped with drive().
+  Simulator& start() { return start_; }
+  /// Sets the last row's targets for the end of `sim`'s next step and takes the step.
+  void drive(Simulator& sim) const {
+    const double travel = 0.1 * (sim.time() + sim.parameters().time_step);  // [m]
+    for (int c = 0; c < side_; ++c) {
+      const double sign = c <= middle() ? -1.0 : 1.0;
+      sim.setKinematicTarget(sim.scene().fabricVertex(0, -1, c),
+                             origin_[c] + Eigen::Vector3d(sign * travel, 0.0, 0.0));
+    }
+    sim.step();
+  }
+
+ private:
+  static FabricSpec spec(int side) {
+    FabricSpec spec = benchFabric(side, 0.002);
+    spec.slits = {{FabricFamily::kWeft, side - side / 4, side - 1, side / 2 - 1}};
+    return spec;
+  }
+  /// The last column of the first tongue [-].
+  int middle() const { return side_ / 2 - 1; }
+
+  int side_;
+  Simulator start_;
+  std::vector<Eigen::Vector3d> origin_;  ///< the last row's start positions [m]
+};
+
 /// The largest stretch of an intact edge over its original rest length, |x_b - x_a| / L0 - 1 [-].
 inline double maxStrain(const Scene& scene) {
   const EdgeSet& edges = scene.edges;

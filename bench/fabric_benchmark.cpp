@@ -19,33 +19,14 @@ void BM_FabricAtRest(benchmark::State& state) {
   state.counters["max_strain"] = maxStrain(sim.scene());
 }
 
-/// A trouser tear: 2 mm between yarns, held along its first row, a slit a quarter of the picks
-/// long up its middle, the two halves of the last row drawn apart along the weft at 0.1 m/s each.
-/// Run until the first tear, then each iteration steps that state kWindow times (copying it is
-/// not timed); `per_step` is the mean step [s] over the window, recoil substeps included, and
-/// `tears` the tears in it.
+/// A trouser tear (TrouserTear), run until the first tear, then each iteration steps that state
+/// kWindow times (copying it is not timed); `per_step` is the mean step [s] over the window, recoil
+/// substeps included, and `tears` the tears in it.
 void BM_FabricTearing(benchmark::State& state) {
   constexpr int kWindow = 50;
-  const int side = static_cast<int>(state.range(0));
-  FabricSpec spec = benchFabric(side, 0.002);
-  const int middle = side / 2 - 1;
-  spec.slits = {{FabricFamily::kWeft, side - side / 4, side - 1, middle}};
-  SimulationParameters parameters;
-  Simulator start(parameters, {}, {spec});
-  const Scene& scene = start.scene();
-  std::vector<Eigen::Vector3d> origin;
-  for (int c = 0; c < side; ++c)
-    origin.push_back(scene.vertices.position[scene.fabricVertex(0, -1, c)]);
-  const auto drive = [&](Simulator& sim) {
-    const double travel = 0.1 * (sim.time() + parameters.time_step);
-    for (int c = 0; c < side; ++c) {
-      const double sign = c <= middle ? -1.0 : 1.0;
-      sim.setKinematicTarget(sim.scene().fabricVertex(0, -1, c),
-                             origin[c] + Eigen::Vector3d(sign * travel, 0.0, 0.0));
-    }
-    sim.step();
-  };
-  timeWindowFromFirstTear(state, start, 2.0, kWindow, drive);
+  TrouserTear tear(static_cast<int>(state.range(0)));
+  timeWindowFromFirstTear(state, tear.start(), 2.0, kWindow,
+                          [&tear](Simulator& sim) { tear.drive(sim); });
 }
 
 BENCHMARK(BM_FabricAtRest)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMicrosecond);

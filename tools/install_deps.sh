@@ -10,8 +10,9 @@ set -euo pipefail
 packages=(
   # toolchain
   build-essential cmake clang-format libeigen3-dev libgtest-dev libbenchmark-dev
-  # the benchmark's reference from another simulator (Bullet's soft-body patch)
-  libbullet-dev pkg-config
+  # the benchmark's references: another simulator (Bullet's soft-body patch), a maintained
+  # sparse Cholesky (CHOLMOD)
+  libbullet-dev pkg-config libsuitesparse-dev
   # catkin + ROS 1 core (roscore, roslaunch, rostopic, rosbag, message generation)
   catkin ros-core ros-core-dev rosbash python3-catkin-pkg python3-genpy python3-rospy
   python3-rosbag librosbag-dev python3-rostest librostest-dev python3-rosunit
