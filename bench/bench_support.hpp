@@ -48,6 +48,12 @@ class TrouserTear {
     }
   }
 
+  /// The fabric of a tear of size `side` [-].
+  static FabricSpec spec(int side) {
+    FabricSpec spec = benchFabric(side, 0.002);
+    spec.slits = {{FabricFamily::kWeft, side - side / 4, side - 1, side / 2 - 1}};
+    return spec;
+  }
   /// The scene at its start, to be stepped with drive().
   Simulator& start() { return start_; }
   /// Sets the last row's targets for the end of `sim`'s next step and takes the step.
@@ -62,11 +68,6 @@ class TrouserTear {
   }
 
  private:
-  static FabricSpec spec(int side) {
-    FabricSpec spec = benchFabric(side, 0.002);
-    spec.slits = {{FabricFamily::kWeft, side - side / 4, side - 1, side / 2 - 1}};
-    return spec;
-  }
   /// The last column of the first tongue [-].
   int middle() const { return side_ / 2 - 1; }
 
@@ -130,13 +131,16 @@ void timeWindowFrom(benchmark::State& state, Simulator& start, const Ready& read
   state.counters["tears"] = static_cast<double>(tears);
 }
 
+/// Whether `sim` has torn (its recoil is pending) or reached `limit` [s] of simulated time.
+inline bool tornOrPast(const Simulator& sim, double limit) {
+  return sim.recoilPending() || sim.time() >= limit;
+}
+
 /// timeWindowFrom() from the first tear of `start`, or from `limit` [s] of simulated time.
 template <typename Drive>
 void timeWindowFromFirstTear(benchmark::State& state, Simulator& start, double limit, int window,
                              const Drive& drive) {
-  const auto torn = [limit](const Simulator& sim) {
-    return sim.recoilPending() || sim.time() >= limit;
-  };
+  const auto torn = [limit](const Simulator& sim) { return tornOrPast(sim, limit); };
   timeWindowFrom(state, start, torn, window, drive);
 }
 

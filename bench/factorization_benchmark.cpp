@@ -180,9 +180,10 @@ const FabricNewtonSystem& trouserTearSystem(int side) {
   if (found != systems.end()) return found->second;
   TrouserTear tear(side);
   Simulator& sim = tear.start();
-  while (!sim.recoilPending() && sim.time() < 2.0) tear.drive(sim);
-  return systems[side] = fabricNewtonSystem(sim.scene(), cotton().youngsModulus(),
-                                            YarnSpec{}.radius, sim.parameters().time_step);
+  while (!tornOrPast(sim, 2.0)) tear.drive(sim);
+  const YarnSpec yarn = TrouserTear::spec(side).warp;
+  return systems[side] = fabricNewtonSystem(sim.scene(), yarn.material.curve.youngsModulus(),
+                                            yarn.radius, sim.parameters().time_step);
 }
 
 /// The largest relative residual accepted of a kernel's solve: the kernels are timed on the
