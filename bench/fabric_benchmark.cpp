@@ -29,8 +29,25 @@ void BM_FabricTearing(benchmark::State& state) {
                           [&tear](Simulator& sim) { tear.drive(sim); });
 }
 
+/// BM_FabricTearing with its factorizations on up to `threads` threads (the second argument,
+/// SimulationParameters::threads), in wall time for both counts.
+void BM_FabricTearingThreads(benchmark::State& state) {
+  constexpr int kWindow = 50;
+  TrouserTear tear(static_cast<int>(state.range(0)));
+  SimulationParameters parameters = tear.start().parameters();
+  parameters.threads = static_cast<int>(state.range(1));
+  tear.start().setParameters(parameters);
+  timeWindowFromFirstTear(state, tear.start(), 2.0, kWindow,
+                          [&tear](Simulator& sim) { tear.drive(sim); });
+}
+
 BENCHMARK(BM_FabricAtRest)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FabricTearing)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FabricTearingThreads)
+    ->Args({64, 1})
+    ->Args({64, 2})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace yarn_tearing

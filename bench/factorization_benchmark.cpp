@@ -215,7 +215,8 @@ Eigen::VectorXd kktFromSchur(const NewtonBlocks& blocks, const Eigen::VectorXd& 
 }
 
 /// Kernels, the second argument: 0 Eigen's simplicial LDL^T and 1 SupernodalLdlt, each on the KKT
-/// system in AMD order; 2 CHOLMOD's supernodal Cholesky of the Schur complement (its own order).
+/// system in AMD order; 2 CHOLMOD's supernodal Cholesky of the Schur complement (its own order);
+/// 3 SupernodalLdlt as 1 on two threads (SupernodalLdlt::setThreads).
 /// `rows` is the factorized system's size [-]; `cost` the KKT factor's sum over its columns of
 /// the squared nonzeros below the diagonal (kernel 1), CHOLMOD's flop count (kernel 2) [-];
 /// `residual` the KKT system's relative residual |K x - b| / |b| of one solve [-].
@@ -238,8 +239,10 @@ void BM_FabricNewtonFactorization(benchmark::State& state) {
       state.counters["rows"] = static_cast<double>(ordered.upper.rows());
       break;
     }
-    case 1: {
+    case 1:
+    case 3: {
       SupernodalLdlt ldlt;
+      ldlt.setThreads(state.range(1) == 3 ? 2 : 1);
       ldlt.analyzePattern(ordered.upper);
       factorized = timeFactorizations(state, [&] { return ldlt.factorize(ordered.upper); });
       Eigen::VectorXd permuted = p * rhs;
@@ -279,11 +282,13 @@ BENCHMARK(BM_FabricNewtonFactorization)
 #ifdef YARN_TEARING_BENCH_CHOLMOD
     ->Args({32, 2})
 #endif
+    ->Args({32, 3})
     ->Args({64, 0})
     ->Args({64, 1})
 #ifdef YARN_TEARING_BENCH_CHOLMOD
     ->Args({64, 2})
 #endif
+    ->Args({64, 3})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 

@@ -145,6 +145,7 @@ SimulationParameters loadPhysics(const PrivateParams& params) {
   params.read("breaking_enabled", [&](const ParamValue& v) { p.breaking_enabled = v.boolean(); });
   params.read("recoil_substeps",
               [&](const ParamValue& v) { p.recoil_substeps = v.integer(1, 10000); });
+  params.read("threads", [&](const ParamValue& v) { p.threads = v.integer(1, 1024); });
   try {
     p.validate();
   } catch (const std::invalid_argument& e) {

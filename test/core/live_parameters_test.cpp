@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "test_support.hpp"
 
@@ -16,6 +17,19 @@ TEST(LiveParameters, InvalidParametersAreRefusedAndTheOldOnesKept) {
   bad.regularization = 1.0;  // allowed: [0, 1)
   EXPECT_THROW(sim.setParameters(bad), std::invalid_argument);
   EXPECT_EQ(sim.parameters().regularization, SimulationParameters{}.regularization);
+}
+
+TEST(LiveParameters, AThreadCountBelowOneIsRefusedByName) {
+  Simulator sim(parametersWithoutGravity(), {hangingYarn()});
+  SimulationParameters bad = sim.parameters();
+  bad.threads = 0;  // allowed: [1, 1024]
+  try {
+    sim.setParameters(bad);
+    ADD_FAILURE() << "threads 0 was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("threads"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(sim.parameters().threads, 1);
 }
 
 // A free yarn moving rigidly (no gravity, no holder) under linear air damping c per unit length

@@ -1,7 +1,7 @@
 // SupernodalLdlt (and SparseLdlt choosing it) against a dense solve and Eigen's simplicial LDL^T:
 // quasi-definite systems shaped like the Newton step's (a grid of vertex blocks joined by edge
 // rows), a diagonal missing from the pattern, the same factor's nonzeros, a refactorization with
-// new values, and a zero pivot.
+// new values, and a zero pivot; the same factor to the bit on two threads.
 #include "yarn_tearing/core/linalg/supernodal_ldlt.hpp"
 
 #include <gtest/gtest.h>
@@ -11,6 +11,7 @@
 #include <Eigen/SparseCholesky>
 #include <cmath>
 
+#include "yarn_tearing/core/linalg/pattern_cached_ldlt.hpp"
 #include "yarn_tearing/core/linalg/sparse_ldlt.hpp"
 
 namespace yarn_tearing::test {
@@ -185,6 +186,61 @@ TEST(SupernodalLdlt, RefusesAZeroPivotAndEntriesBelowTheDiagonal) {
   EXPECT_FALSE(ldlt.analyzePattern(lower));
 }
 
+/// Analyses `upper` with `one` on one thread and `two` on two, whose split puts subtrees on both
+/// threads and leaves the top separators for after them.
+void analyzeOnOneAndTwoThreads(const Eigen::SparseMatrix<double>& upper, SupernodalLdlt& one,
+                               SupernodalLdlt& two) {
+  two.setThreads(2);
+  ASSERT_TRUE(one.analyzePattern(upper));
+  ASSERT_TRUE(two.analyzePattern(upper));
+  ASSERT_TRUE(two.schedule().split());
+  EXPECT_FALSE(two.schedule().top.empty());
+  EXPECT_LT(two.schedule().time_share, 0.9);
+}
+
+TEST(SupernodalLdlt, FactorizesToTheSameBitsOnTwoThreads) {
+  const Eigen::SparseMatrix<double> first = orderedUpper(gridSystem(24, 1.0));
+  SupernodalLdlt one;
+  SupernodalLdlt two;
+  ASSERT_NO_FATAL_FAILURE(analyzeOnOneAndTwoThreads(first, one, two));
+  Eigen::SparseMatrix<double> second = first;
+  for (Eigen::Index k = 0; k < second.nonZeros(); ++k) {
+    second.valuePtr()[k] *= 1.0 + 0.5 * std::cos(static_cast<double>(k));
+  }
+  const Eigen::SparseMatrix<double>* systems[] = {&first, &second};
+  for (const Eigen::SparseMatrix<double>* upper : systems) {
+    ASSERT_TRUE(one.factorize(*upper));
+    ASSERT_TRUE(two.factorize(*upper));
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(upper->rows(), -1.0, 3.0);
+    Eigen::VectorXd x_one = b;
+    Eigen::VectorXd x_two = b;
+    one.solveInPlace(x_one);
+    two.solveInPlace(x_two);
+    EXPECT_LT(backwardError(*upper, x_two, b), kSameRoundOff * simplicialBackwardError(*upper, b));
+    for (Eigen::Index i = 0; i < b.size(); ++i) ASSERT_EQ(x_one[i], x_two[i]) << "row " << i;
+  }
+}
+
+TEST(SupernodalLdlt, RefusesAZeroPivotOnTwoThreadsWhereOneDoes) {
+  const Eigen::SparseMatrix<double> upper = orderedUpper(gridSystem(16, 1.0));
+  SupernodalLdlt one;
+  SupernodalLdlt two;
+  ASSERT_NO_FATAL_FAILURE(analyzeOnOneAndTwoThreads(upper, one, two));
+  // A zero diagonal entry: a zero pivot where its column is a leaf of the elimination tree,
+  // whichever thread eliminates it.
+  int refused = 0;
+  for (Eigen::Index j = 0; j < upper.cols(); j += 3) {
+    Eigen::SparseMatrix<double> trial = upper;
+    trial.coeffRef(j, j) = 0.0;
+    const bool factorized = one.factorize(trial);
+    EXPECT_EQ(two.factorize(trial), factorized) << "column " << j;
+    refused += factorized ? 0 : 1;
+  }
+  EXPECT_GT(refused, 10);
+  // Both take the system again after a refusal.
+  EXPECT_TRUE(two.factorize(upper));
+}
+
 }  // namespace
 }  // namespace yarn_tearing::test
 
@@ -235,6 +291,35 @@ TEST(SparseLdlt, HandsBackToTheSimplicialKernelOnlyBelowItsLowerCost) {
     Eigen::VectorXd x = b;
     ldlt.solveInPlace(x);
     EXPECT_LT(backwardError(upper, x, b), kSameRoundOff * simplicialBackwardError(upper, b));
+  }
+}
+
+TEST(PatternCachedLdlt, SolvesTheSameOnTwoThreadsWithTheSupernodalKernel) {
+  // The 40 x 40 grid's system takes the supernodal kernel (above); listed as a Newton step lists
+  // its entries.
+  const Eigen::SparseMatrix<double> full = gridSystem(40, 1.0);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Eigen::Index j = 0; j < full.outerSize(); ++j) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(full, j); it; ++it) {
+      entries.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
+    }
+  }
+  PatternCachedLdlt one;
+  PatternCachedLdlt two;
+  two.setThreads(2);
+  ASSERT_TRUE(one.factorize(entries, full.rows()));
+  ASSERT_TRUE(two.factorize(entries, full.rows()));
+  // A copy keeps the thread count (a Simulator copied keeps its parameters).
+  PatternCachedLdlt copy = two;
+  ASSERT_TRUE(copy.factorize(entries, full.rows()));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(full.rows(), 2.0, -1.0);
+  const Eigen::VectorXd x_one = one.solve(b);
+  const Eigen::VectorXd x_two = two.solve(b);
+  const Eigen::VectorXd x_copy = copy.solve(b);
+  EXPECT_LT((full * x_two - b).norm(), 1e-6 * b.norm());
+  for (Eigen::Index i = 0; i < b.size(); ++i) {
+    ASSERT_EQ(x_one[i], x_two[i]) << "row " << i;
+    ASSERT_EQ(x_one[i], x_copy[i]) << "row " << i;
   }
 }
 

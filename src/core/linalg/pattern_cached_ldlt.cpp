@@ -166,6 +166,7 @@ bool PatternCachedLdlt::analyzeNonzeros(bool grow) {
 
 bool PatternCachedLdlt::factorizeValues() {
   Analysis& a = *kept_.front();
+  a.ldlt.setThreads(threads_);
   if (!leave_out_zeros_) return a.ldlt.factorize(a.upper);
   const NonzeroFit fit = nonzerosFitAnalysed();
   if (fit != NonzeroFit::kFits && !analyzeNonzeros(fit == NonzeroFit::kGrow)) return false;

@@ -3,6 +3,9 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <new>
+#include <system_error>
+#include <thread>
 
 namespace yarn_tearing {
 namespace {
@@ -267,11 +270,11 @@ void SupernodalLdlt::placeEntries() {
   for (int s = 0; s < supernodes; ++s) {
     const Eigen::Index rows = row_start_[s + 1] - row_start_[s];
     for (Eigen::Index r = 0; r < rows; ++r)
-      local_row_[rows_[row_start_[s] + r]] = static_cast<int>(r);
+      work_[0].local_row[rows_[row_start_[s] + r]] = static_cast<int>(r);
     for (int k = first_column_[s]; k < first_column_[s + 1]; ++k) {
       const Eigen::Index column = block_start_[s] + (k - first_column_[s]) * rows;
       for (int p = lower_start_[k]; p < lower_start_[k + 1]; ++p) {
-        entry_slot_[lower_entry_[p]] = column + local_row_[lower_row_[p]];
+        entry_slot_[lower_entry_[p]] = column + work_[0].local_row[lower_row_[p]];
       }
     }
   }
@@ -308,20 +311,45 @@ bool SupernodalLdlt::analyzePattern(const Eigen::SparseMatrix<double>& upper) {
   first_column_.clear();
   if (!analyzeCounts(upper)) return false;
   findSupernodes();
-  local_row_.assign(static_cast<std::size_t>(size_), 0);
+  work_[0].local_row.assign(static_cast<std::size_t>(size_), 0);
   collectRows();
   placeEntries();
   const std::size_t supernodes = first_column_.size() - 1;
   values_.resize(static_cast<std::size_t>(block_start_[supernodes]));
   diagonal_.resize(static_cast<std::size_t>(size_));
   next_update_.resize(supernodes);
-  update_list_.resize(supernodes);
+  for (Workspace& work : work_) work.update_list.resize(supernodes);
+  waited_after_.resize(supernodes);
+  scheduleThreads();
   update_next_.resize(supernodes);
   return true;
 }
 
+void SupernodalLdlt::scheduleThreads() {
+  const int supernodes = static_cast<int>(first_column_.size()) - 1;
+  std::vector<int>& tree = scratch_a_;
+  tree.assign(supernodes, -1);
+  std::vector<double> cost(static_cast<std::size_t>(supernodes), 0.0);
+  for (int d = 0; d < supernodes; ++d) {
+    const Eigen::Index columns = first_column_[d + 1] - first_column_[d];
+    const Eigen::Index rows = row_start_[d + 1] - row_start_[d];
+    const int* row = rows_.data() + row_start_[d];
+    cost[d] += static_cast<double>(columns * columns * rows);
+    // d's rows below its columns, in runs of one later supernode's columns each, update it.
+    for (Eigen::Index first = columns; first < rows;) {
+      const int s = supernode_of_[row[first]];
+      if (first == columns) tree[d] = s;
+      Eigen::Index end = first;
+      while (end < rows && row[end] < first_column_[s + 1]) ++end;
+      cost[s] += static_cast<double>((end - first) * (rows - first) * columns);
+      first = end;
+    }
+  }
+  schedule_ = scheduleSubtrees(tree, cost);
+}
+
 void SupernodalLdlt::applyUpdate(Eigen::Index d, Eigen::Index s, Eigen::Index first,
-                                 Eigen::Index end) {
+                                 Eigen::Index end, Workspace& work) {
   const Eigen::Index d_first = first_column_[d];
   const Eigen::Index d_columns = first_column_[d + 1] - d_first;
   const Eigen::Index d_rows = row_start_[d + 1] - row_start_[d];
@@ -330,24 +358,24 @@ void SupernodalLdlt::applyUpdate(Eigen::Index d, Eigen::Index s, Eigen::Index fi
   // Rows first.. of d update s; rows first..end of them fall in s's columns.
   const Eigen::Index width = end - first;
   const Eigen::Index height = d_rows - first;
-  if (scaled_.size() < static_cast<std::size_t>(width * d_columns)) {
-    scaled_.resize(static_cast<std::size_t>(width * d_columns));
+  if (work.scaled.size() < static_cast<std::size_t>(width * d_columns)) {
+    work.scaled.resize(static_cast<std::size_t>(width * d_columns));
   }
-  if (product_.size() < static_cast<std::size_t>(height * width)) {
-    product_.resize(static_cast<std::size_t>(height * width));
+  if (work.product.size() < static_cast<std::size_t>(height * width)) {
+    work.product.resize(static_cast<std::size_t>(height * width));
   }
   // product = L_d(first.., :) D_d L_d(first..end, :)^T, its lower trapezoid needed.
   if (d_columns >= kDenseProductColumns && width >= kDenseProductColumns) {
-    Block scaled(scaled_.data(), width, d_columns);
+    Block scaled(work.scaled.data(), width, d_columns);
     const ConstBlock block(source, d_rows, d_columns);
     const Eigen::Map<const Eigen::VectorXd> pivots(diagonal_.data() + d_first, d_columns);
     scaled.noalias() = block.middleRows(first, width) * pivots.asDiagonal();
-    Block product(product_.data(), height, width);
+    Block product(work.product.data(), height, width);
     product.noalias() = block.bottomRows(height) * scaled.transpose();
   } else {
     // Narrow updates (the edge rows' and vertices' own): plain loops, no kernel set-up.
     for (Eigen::Index q = 0; q < width; ++q) {
-      double* column = product_.data() + q * height;
+      double* column = work.product.data() + q * height;
       std::fill(column + q, column + height, 0.0);
       for (Eigen::Index k = 0; k < d_columns; ++k) {
         const double* l = source + k * d_rows + first;
@@ -362,32 +390,33 @@ void SupernodalLdlt::applyUpdate(Eigen::Index d, Eigen::Index s, Eigen::Index fi
   double* target = values_.data() + block_start_[s];
   for (Eigen::Index q = 0; q < width; ++q) {
     double* column = target + (d_row[first + q] - s_first) * s_rows;
-    const double* update = product_.data() + q * height;
-    for (Eigen::Index r = q; r < height; ++r) column[local_row_[d_row[first + r]]] -= update[r];
+    const double* update = work.product.data() + q * height;
+    for (Eigen::Index r = q; r < height; ++r) column[work.local_row[d_row[first + r]]] -= update[r];
   }
 }
 
-bool SupernodalLdlt::factorizeBlock(Eigen::Index s) {
+bool SupernodalLdlt::factorizeBlock(Eigen::Index s, Workspace& work) {
   const Eigen::Index first = first_column_[s];
   const Eigen::Index columns = first_column_[s + 1] - first;
   const Eigen::Index rows = row_start_[s + 1] - row_start_[s];
   double* values = values_.data() + block_start_[s];
-  if (scaled_.size() < static_cast<std::size_t>(columns)) {
-    scaled_.resize(static_cast<std::size_t>(columns));
+  if (work.scaled.size() < static_cast<std::size_t>(columns)) {
+    work.scaled.resize(static_cast<std::size_t>(columns));
   }
   // Left-looking LDL^T of the block's columns, its rows below the diagonal block included.
   for (Eigen::Index k = 0; k < columns; ++k) {
     double* column = values + k * rows;
-    for (Eigen::Index j = 0; j < k; ++j) scaled_[j] = diagonal_[first + j] * values[j * rows + k];
+    for (Eigen::Index j = 0; j < k; ++j)
+      work.scaled[j] = diagonal_[first + j] * values[j * rows + k];
     if (k >= kDenseProductColumns) {
       const ConstBlock left(values, rows, k);
-      const Eigen::Map<const Eigen::VectorXd> scaled(scaled_.data(), k);
+      const Eigen::Map<const Eigen::VectorXd> scaled(work.scaled.data(), k);
       Eigen::Map<Eigen::VectorXd>(column + k, rows - k).noalias() -=
           left.bottomRows(rows - k) * scaled;
     } else {
       for (Eigen::Index j = 0; j < k; ++j) {
         const double* l = values + j * rows;
-        const double factor = scaled_[j];
+        const double factor = work.scaled[j];
         for (Eigen::Index r = k; r < rows; ++r) column[r] -= l[r] * factor;
       }
     }
@@ -400,6 +429,98 @@ bool SupernodalLdlt::factorizeBlock(Eigen::Index s) {
   return true;
 }
 
+void SupernodalLdlt::wait(Eigen::Index d, Eigen::Index row, Eigen::Index key, Workspace& work) {
+  next_update_[d] = static_cast<int>(row);
+  waited_after_[d] = static_cast<int>(key);
+  // Each list runs from the latest elimination's waiting to the earliest's (a thread's own
+  // eliminations come in order, so it puts its waiting at the head).
+  int* link = &work.update_list[supernode_of_[rows_[row_start_[d] + row]]];
+  while (*link != -1 && waited_after_[*link] > key) link = &update_next_[*link];
+  update_next_[d] = *link;
+  *link = static_cast<int>(d);
+}
+
+bool SupernodalLdlt::eliminate(Eigen::Index s, Workspace& work) {
+  const Eigen::Index rows = row_start_[s + 1] - row_start_[s];
+  const int* row = rows_.data() + row_start_[s];
+  for (Eigen::Index r = 0; r < rows; ++r) work.local_row[row[r]] = static_cast<int>(r);
+  const int last = first_column_[s + 1] - 1;
+  for (int d = work.update_list[s]; d != -1;) {
+    const int next = update_next_[d];
+    const Eigen::Index d_rows = row_start_[d + 1] - row_start_[d];
+    const int* d_row = rows_.data() + row_start_[d];
+    const Eigen::Index first = next_update_[d];
+    Eigen::Index end = first;
+    while (end < d_rows && d_row[end] <= last) ++end;
+    applyUpdate(d, s, first, end, work);
+    if (end < d_rows) wait(d, end, s, work);
+    d = next;
+  }
+  if (!factorizeBlock(s, work)) return false;
+  const Eigen::Index columns = first_column_[s + 1] - first_column_[s];
+  if (rows > columns) wait(s, columns, s, work);
+  return true;
+}
+
+bool SupernodalLdlt::eliminateRanges(const std::vector<std::pair<int, int>>& ranges,
+                                     Workspace& work) {
+  for (const auto& [first, last] : ranges) {
+    for (int s = first; s <= last; ++s) {
+      if (!eliminate(s, work)) return false;
+    }
+  }
+  return true;
+}
+
+void SupernodalLdlt::mergeWaiting() {
+  for (const int s : schedule_.top) {
+    int* link = &work_[0].update_list[s];
+    int other = work_[1].update_list[s];
+    while (other != -1) {
+      if (*link == -1 || waited_after_[*link] < waited_after_[other]) {
+        const int next = update_next_[other];
+        update_next_[other] = *link;
+        *link = other;
+        other = next;
+      }
+      link = &update_next_[*link];
+    }
+  }
+}
+
+bool SupernodalLdlt::factorizeSplit() {
+  Workspace& helper_work = work_[1];
+  helper_work.local_row.resize(static_cast<std::size_t>(size_));
+  std::fill(helper_work.update_list.begin(), helper_work.update_list.end(), -1);
+  bool helper_done = true;
+  const auto helper = [this, &helper_work, &helper_done] {
+    // An exception must not leave a thread: a failed allocation fails the factorization.
+    try {
+      helper_done = eliminateRanges(schedule_.ranges[1], helper_work);
+    } catch (const std::bad_alloc&) {
+      helper_done = false;
+    }
+  };
+  std::thread thread;
+  try {
+    thread = std::thread(helper);
+  } catch (const std::system_error&) {
+    // No second thread to be had: the helper's eliminations follow on this one.
+  }
+  const bool done = eliminateRanges(schedule_.ranges[0], work_[0]);
+  if (thread.joinable()) {
+    thread.join();
+  } else {
+    helper();
+  }
+  if (!done || !helper_done) return false;
+  mergeWaiting();
+  for (const int s : schedule_.top) {
+    if (!eliminate(s, work_[0])) return false;
+  }
+  return true;
+}
+
 bool SupernodalLdlt::factorize(const Eigen::SparseMatrix<double>& upper) {
   if (first_column_.empty() || upper.rows() != size_ || upper.nonZeros() != nonzeros_) {
     return false;
@@ -407,34 +528,11 @@ bool SupernodalLdlt::factorize(const Eigen::SparseMatrix<double>& upper) {
   std::fill(values_.begin(), values_.end(), 0.0);
   const double* entries = upper.valuePtr();
   for (Eigen::Index p = 0; p < nonzeros_; ++p) values_[entry_slot_[p]] += entries[p];
+  std::fill(work_[0].update_list.begin(), work_[0].update_list.end(), -1);
+  if (threads_ > 1 && schedule_.split()) return factorizeSplit();
   const Eigen::Index supernodes = static_cast<Eigen::Index>(first_column_.size()) - 1;
-  std::fill(update_list_.begin(), update_list_.end(), -1);
-  // Each finished supernode waits in the list of the next supernode its rows reach.
-  const auto wait = [this](Eigen::Index d, Eigen::Index row) {
-    next_update_[d] = static_cast<int>(row);
-    const int target = supernode_of_[rows_[row_start_[d] + row]];
-    update_next_[d] = update_list_[target];
-    update_list_[target] = static_cast<int>(d);
-  };
   for (Eigen::Index s = 0; s < supernodes; ++s) {
-    const Eigen::Index rows = row_start_[s + 1] - row_start_[s];
-    const int* row = rows_.data() + row_start_[s];
-    for (Eigen::Index r = 0; r < rows; ++r) local_row_[row[r]] = static_cast<int>(r);
-    const int last = first_column_[s + 1] - 1;
-    for (int d = update_list_[s]; d != -1;) {
-      const int next = update_next_[d];
-      const Eigen::Index d_rows = row_start_[d + 1] - row_start_[d];
-      const int* d_row = rows_.data() + row_start_[d];
-      const Eigen::Index first = next_update_[d];
-      Eigen::Index end = first;
-      while (end < d_rows && d_row[end] <= last) ++end;
-      applyUpdate(d, s, first, end);
-      if (end < d_rows) wait(d, end);
-      d = next;
-    }
-    if (!factorizeBlock(s)) return false;
-    const Eigen::Index columns = first_column_[s + 1] - first_column_[s];
-    if (rows > columns) wait(s, columns);
+    if (!eliminate(s, work_[0])) return false;
   }
   return true;
 }

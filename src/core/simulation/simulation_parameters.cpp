@@ -31,6 +31,8 @@ void SimulationParameters::validate() const {
               std::to_string(max_projection_iterations));
   require(recoil_substeps >= 1 && recoil_substeps <= 10000,
           "recoil_substeps must be in [1, 10000], got " + std::to_string(recoil_substeps));
+  require(threads >= 1 && threads <= 1024,
+          "threads must be in [1, 1024], got " + std::to_string(threads));
 }
 
 }  // namespace yarn_tearing

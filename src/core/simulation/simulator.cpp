@@ -98,6 +98,8 @@ void Simulator::applySolverSwitches() {
   work_.gram.forceDirectSolves(parameters_.force_direct_solves);
   work_.projection.forceFullNewtonSystems(parameters_.force_full_newton_systems);
   work_.projection.forceFreshFactorizations(parameters_.force_fresh_factorizations);
+  work_.gram.setThreads(parameters_.threads);
+  work_.projection.setThreads(parameters_.threads);
 }
 
 void Simulator::reset() {

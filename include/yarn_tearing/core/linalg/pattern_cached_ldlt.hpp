@@ -43,10 +43,13 @@ class PatternCachedLdlt {
  public:
   PatternCachedLdlt() = default;
   PatternCachedLdlt(const PatternCachedLdlt& other)
-      : leave_out_zeros_(other.leave_out_zeros_), most_kept_(other.most_kept_) {}
+      : leave_out_zeros_(other.leave_out_zeros_),
+        most_kept_(other.most_kept_),
+        threads_(other.threads_) {}
   PatternCachedLdlt& operator=(const PatternCachedLdlt& other) {
     leave_out_zeros_ = other.leave_out_zeros_;
     most_kept_ = other.most_kept_;
+    threads_ = other.threads_;
     kept_.clear();
     direct_values_ = nullptr;
     direct_count_ = 0;
@@ -57,6 +60,9 @@ class PatternCachedLdlt {
   void leaveOutZeros() { leave_out_zeros_ = true; }
   /// Keeps the last `most` analyses (at least 1, the default) to be taken up again (see above).
   void keepAnalyses(std::size_t most) { most_kept_ = std::max<std::size_t>(most, 1); }
+  /// Threads the factorizations may use [-] (SparseLdlt::setThreads); the factors do not depend
+  /// on it.
+  void setThreads(int threads) { threads_ = threads; }
 
   /// Factorizes the size x size matrix of `entries`; false when the factorization fails.
   bool factorize(const std::vector<Eigen::Triplet<double>>& entries, Eigen::Index size);
@@ -168,6 +174,7 @@ class PatternCachedLdlt {
   std::unique_ptr<Analysis> makeRoom();
   bool leave_out_zeros_ = false;  ///< see leaveOutZeros()
   std::size_t most_kept_ = 1;     ///< see keepAnalyses()
+  int threads_ = 1;               ///< see setThreads()
   bool ordered_ = false;          ///< the last analysis computed its ordering
   bool reorder_next_ = true;      ///< the next analysis computes a new ordering
   double ordered_fill_ = 0.0;     ///< factor nonzeros per matrix nonzero at the last ordering [-]

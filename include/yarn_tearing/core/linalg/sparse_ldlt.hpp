@@ -28,6 +28,9 @@ class SparseLdlt {
   void solveInPlace(Eigen::VectorXd& x) const;
   /// Nonzeros of L below the diagonal in the analysed pattern [-].
   Eigen::Index factorNonZeros() const;
+  /// Threads the supernodal kernel's factorizations may use [-] (SupernodalLdlt::setThreads);
+  /// the simplicial kernel uses one.
+  void setThreads(int threads) { supernodal_ldlt_.setThreads(threads); }
   /// Whether the supernodal kernel is in use [-] (for tests and benchmarks).
   bool supernodal() const { return supernodal_; }
 

@@ -4,6 +4,8 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
+#include "yarn_tearing/core/linalg/subtree_schedule.hpp"
+
 namespace yarn_tearing {
 
 /// A supernodal LDL^T (L unit lower triangular, D diagonal, no pivoting) of a sparse symmetric
@@ -23,6 +25,11 @@ namespace yarn_tearing {
 /// analyzePattern() computes the elimination tree, the supernodes and where each entry of the
 /// matrix lands in them; factorize() takes a matrix of the analysed pattern (the same column
 /// pointers and row indices, any values).
+///
+/// With setThreads(2), factorize() eliminates two sets of disjoint subtrees of the supernodal
+/// tree at once (scheduleSubtrees()), then the supernodes above them. Each supernode gathers its
+/// updates in the order of the supernodes' eliminations that made them ready, whatever thread
+/// made them, so the factor is the same to the last bit for either thread count.
 class SupernodalLdlt {
  public:
   /// Analyses the pattern of `upper` (square, compressed, column-major, entries on and above the
@@ -32,6 +39,10 @@ class SupernodalLdlt {
   bool factorize(const Eigen::SparseMatrix<double>& upper);
   /// Solves A x = b with the last factorization, in place (b in, x out).
   void solveInPlace(Eigen::VectorXd& x) const;
+  /// Threads factorize() may use [-] (1 or 2; more count as 2). The factor does not depend on it.
+  void setThreads(int threads) { threads_ = threads; }
+  /// The last analysis's split over two threads (for tests and benchmarks).
+  const SubtreeSchedule& schedule() const { return schedule_; }
   /// Nonzeros of L below the diagonal in the analysed pattern (without the zeros a relaxed
   /// supernode stores) [-].
   Eigen::Index factorNonZeros() const { return factor_nonzeros_; }
@@ -65,11 +76,37 @@ class SupernodalLdlt {
   void collectRows();
   /// Where each entry of the upper triangle lands in the blocks (entry_slot_).
   void placeEntries();
-  /// Subtracts supernode d's update from supernode s, whose rows are in local_row_; `first` and
-  /// `end` delimit d's rows within s's columns; `first` to d's last row is what it updates.
-  void applyUpdate(Eigen::Index d, Eigen::Index s, Eigen::Index first, Eigen::Index end);
+  /// The scratch of one thread's eliminations.
+  struct Workspace {
+    std::vector<int> local_row;    ///< row -> its index in the supernode being eliminated
+    std::vector<int> update_list;  ///< per supernode: first supernode waiting to update it
+    std::vector<double> product;   ///< an update's dense product
+    std::vector<double> scaled;    ///< an update's rows scaled by D
+  };
+  /// The supernodal tree (the supernode of each one's first row below its columns, -1 at roots)
+  /// and each supernode's elimination cost (its updates' and its own block's multiply-adds),
+  /// split over two threads: schedule_.
+  void scheduleThreads();
+  /// Subtracts supernode d's update from supernode s, whose rows are in work.local_row; `first`
+  /// and `end` delimit d's rows within s's columns; `first` to d's last row is what it updates.
+  void applyUpdate(Eigen::Index d, Eigen::Index s, Eigen::Index first, Eigen::Index end,
+                   Workspace& work);
   /// Factorizes supernode s's block in place (its diagonal block and the rows below it).
-  bool factorizeBlock(Eigen::Index s);
+  bool factorizeBlock(Eigen::Index s, Workspace& work);
+  /// Eliminates supernode s: gathers the updates waiting for it, factorizes its block and puts
+  /// it in the list of the next supernode its rows reach; false when a pivot fails.
+  bool eliminate(Eigen::Index s, Workspace& work);
+  /// Eliminates the supernodes of `ranges` in order; false when a pivot fails.
+  bool eliminateRanges(const std::vector<std::pair<int, int>>& ranges, Workspace& work);
+  /// Puts supernode d, whose rows from `row` on update later supernodes, in the waiting list of
+  /// the supernode of that row, after those that waited in a later elimination than `key`'s.
+  void wait(Eigen::Index d, Eigen::Index row, Eigen::Index key, Workspace& work);
+  /// Merges the second workspace's waiting lists of the top's supernodes into the first's, in
+  /// the order of the eliminations that put them there.
+  void mergeWaiting();
+  /// Factorizes with the split over two threads (the helper's subtrees on a second one, where
+  /// one can be started); false when a pivot fails.
+  bool factorizeSplit();
 
   /// Whether two adjacent supernodes are joined into one `columns` wide, of `stored` entries
   /// (its diagonal block's lower triangle included), `zeros` of them stored zeros.
@@ -107,13 +144,13 @@ class SupernodalLdlt {
   std::vector<int> scratch_b_;
   std::vector<int> scratch_c_;
   std::vector<int> scratch_d_;
+  int threads_ = 1;           ///< see setThreads()
+  SubtreeSchedule schedule_;  ///< see schedule()
   // Scratch of factorize().
-  std::vector<int> local_row_;        ///< row -> its index in the supernode being factorized
+  Workspace work_[2];                 ///< the calling thread's scratch and the helper's
   std::vector<int> next_update_;      ///< per supernode: its next row that updates a later one
-  std::vector<int> update_list_;      ///< per supernode: first supernode waiting to update it
   std::vector<int> update_next_;      ///< per supernode: next one in the same waiting list
-  std::vector<double> product_;       ///< an update's dense product
-  std::vector<double> scaled_;        ///< an update's rows scaled by D
+  std::vector<int> waited_after_;     ///< per supernode: the elimination it last waited after
   mutable Eigen::VectorXd permuted_;  ///< the right-hand side renumbered (solve)
 };
 

@@ -47,6 +47,8 @@ class EdgeGramSolver {
   /// Solves every system of a graph that is no chain by the sparse LDL^T, never by conjugate
   /// gradients (for testing both paths).
   void forceDirectSolves(bool force) { force_direct_ = force; }
+  /// Threads the sparse factorization may use [-] (PatternCachedLdlt::setThreads).
+  void setThreads(int threads) { factorization_.setThreads(threads); }
   /// True when the O(N) banded path is used.
   bool usesBandedPath() const { return is_chain_ && !force_general_; }
   /// True when the last solve() converged by conjugate gradients.

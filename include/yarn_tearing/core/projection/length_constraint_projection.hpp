@@ -67,6 +67,8 @@ class LengthConstraintProjection {
   void forceFullNewtonSystems(bool force) { newton_.forceFullSystems(force); }
   /// Newton steps factorize every system (StiffNewtonStep::forceFreshFactorizations).
   void forceFreshFactorizations(bool force) { newton_.forceFreshFactorizations(force); }
+  /// Threads the Newton steps' factorizations may use [-] (StiffNewtonStep::setThreads).
+  void setThreads(int threads) { newton_.setThreads(threads); }
   /// Projects `position` in place. `limits` gives each edge's compliance c [m/N] and largest
   /// stretch [m]; masses and supports come from `vertices`. With `step_start` [m], the
   /// positions at the start of the step, a vertex that is slow sideways ((omega dt)^2 <=

@@ -79,6 +79,12 @@ class StiffNewtonStep {
   /// Factorizes every system, never solving one with the last factorization
   /// (solveWithLastFactor()), for comparing the two.
   void forceFreshFactorizations(bool force) { force_fresh_ = force; }
+  /// Threads the sparse factorizations may use [-] (PatternCachedLdlt::setThreads).
+  void setThreads(int threads) {
+    general_factorization_.setThreads(threads);
+    condensed_factorization_.setThreads(threads);
+    contact_factorization_.setThreads(threads);
+  }
   /// Systems factorized since this object was made [-].
   long factorizations() const { return factorizations_; }
   /// From now on in this projection, every Newton step pivots until its taut set holds.

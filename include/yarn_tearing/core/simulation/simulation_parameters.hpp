@@ -90,6 +90,10 @@ struct SimulationParameters {
   /// Newton steps factorize every system, never solving one by refinement with the last
   /// factorization of the same layout (StiffNewtonStep; for comparing the two).
   bool force_fresh_factorizations = false;
+  /// Threads a large sparse factorization may use [-] (>= 1; it uses at most 2): the
+  /// supernodal kernel's factorizations (fabrics of some 64 x 64 vertices up, while taut) then
+  /// eliminate disjoint parts of the system on a second thread. Results do not depend on it.
+  int threads = 1;
 
   /// Throws std::invalid_argument naming the parameter and the allowed range.
   void validate() const;
