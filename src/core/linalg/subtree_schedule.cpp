@@ -7,8 +7,9 @@ namespace yarn_tearing {
 namespace {
 
 /// Subtrees whose roots the top may take in before the search stops [-]: a tree's cost sits in
-/// its upper separators, so the best split is found within the first few.
-constexpr int kMostTopNodes = 64;
+/// its upper separators, so the best split is found within the first few (the 64 x 64 trouser
+/// tear's Newton system: with one).
+constexpr int kMostTopNodes = 16;
 
 }  // namespace
 
@@ -19,7 +20,8 @@ SubtreeSchedule scheduleSubtrees(const std::vector<int>& parent, const std::vect
   std::vector<int> first(static_cast<std::size_t>(n));
   std::vector<int> size(static_cast<std::size_t>(n), 1);
   for (int s = 0; s < n; ++s) first[s] = s;
-  std::vector<std::vector<int>> children(static_cast<std::size_t>(n));
+  // Children by parent (compressed: child_start[p] to child_start[p + 1] in children).
+  std::vector<int> child_start(static_cast<std::size_t>(n) + 1, 0);
   double total = 0.0;
   for (int s = 0; s < n; ++s) {
     const int p = parent[s];
@@ -31,7 +33,13 @@ SubtreeSchedule scheduleSubtrees(const std::vector<int>& parent, const std::vect
     subtree[p] += subtree[s];
     first[p] = std::min(first[p], first[s]);
     size[p] += size[s];
-    children[p].push_back(s);
+    ++child_start[p + 1];
+  }
+  for (int s = 0; s < n; ++s) child_start[s + 1] += child_start[s];
+  std::vector<int> children(static_cast<std::size_t>(child_start[n]));
+  std::vector<int> next_child(child_start.begin(), child_start.end() - 1);
+  for (int s = 0; s < n; ++s) {
+    if (parent[s] != -1) children[next_child[parent[s]]++] = s;
   }
   for (int s = 0; s < n; ++s) {
     if (size[s] != s - first[s] + 1) return {};  // not a postorder
@@ -65,9 +73,10 @@ SubtreeSchedule scheduleSubtrees(const std::vector<int>& parent, const std::vect
       best.top = top;
     }
     const int root = frontier.front();
-    if (children[root].empty()) break;
+    if (child_start[root] == child_start[root + 1]) break;
     frontier.erase(frontier.begin());
-    frontier.insert(frontier.end(), children[root].begin(), children[root].end());
+    frontier.insert(frontier.end(), children.begin() + child_start[root],
+                    children.begin() + child_start[root + 1]);
     top.push_back(root);
     top_cost += cost[root];
   }

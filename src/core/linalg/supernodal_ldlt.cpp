@@ -309,6 +309,7 @@ bool SupernodalLdlt::analyzeCounts(const Eigen::SparseMatrix<double>& upper) {
 
 bool SupernodalLdlt::analyzePattern(const Eigen::SparseMatrix<double>& upper) {
   first_column_.clear();
+  scheduled_ = false;
   if (!analyzeCounts(upper)) return false;
   findSupernodes();
   work_[0].local_row.assign(static_cast<std::size_t>(size_), 0);
@@ -320,7 +321,7 @@ bool SupernodalLdlt::analyzePattern(const Eigen::SparseMatrix<double>& upper) {
   next_update_.resize(supernodes);
   for (Workspace& work : work_) work.update_list.resize(supernodes);
   waited_after_.resize(supernodes);
-  scheduleThreads();
+  if (threads_ > 1) scheduleThreads();
   update_next_.resize(supernodes);
   return true;
 }
@@ -346,6 +347,7 @@ void SupernodalLdlt::scheduleThreads() {
     }
   }
   schedule_ = scheduleSubtrees(tree, cost);
+  scheduled_ = true;
 }
 
 void SupernodalLdlt::applyUpdate(Eigen::Index d, Eigen::Index s, Eigen::Index first,
@@ -529,7 +531,10 @@ bool SupernodalLdlt::factorize(const Eigen::SparseMatrix<double>& upper) {
   const double* entries = upper.valuePtr();
   for (Eigen::Index p = 0; p < nonzeros_; ++p) values_[entry_slot_[p]] += entries[p];
   std::fill(work_[0].update_list.begin(), work_[0].update_list.end(), -1);
-  if (threads_ > 1 && schedule_.split()) return factorizeSplit();
+  if (threads_ > 1) {
+    if (!scheduled_) scheduleThreads();
+    if (schedule_.split()) return factorizeSplit();
+  }
   const Eigen::Index supernodes = static_cast<Eigen::Index>(first_column_.size()) - 1;
   for (Eigen::Index s = 0; s < supernodes; ++s) {
     if (!eliminate(s, work_[0])) return false;

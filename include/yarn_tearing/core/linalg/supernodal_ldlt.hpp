@@ -41,7 +41,8 @@ class SupernodalLdlt {
   void solveInPlace(Eigen::VectorXd& x) const;
   /// Threads factorize() may use [-] (1 or 2; more count as 2). The factor does not depend on it.
   void setThreads(int threads) { threads_ = threads; }
-  /// The last analysis's split over two threads (for tests and benchmarks).
+  /// The last analysis's split over two threads, once an analysis or a factorization with two
+  /// threads has made it (for tests and benchmarks).
   const SubtreeSchedule& schedule() const { return schedule_; }
   /// Nonzeros of L below the diagonal in the analysed pattern (without the zeros a relaxed
   /// supernode stores) [-].
@@ -146,6 +147,7 @@ class SupernodalLdlt {
   std::vector<int> scratch_d_;
   int threads_ = 1;           ///< see setThreads()
   SubtreeSchedule schedule_;  ///< see schedule()
+  bool scheduled_ = false;    ///< schedule_ is the last analysis's
   // Scratch of factorize().
   Workspace work_[2];                 ///< the calling thread's scratch and the helper's
   std::vector<int> next_update_;      ///< per supernode: its next row that updates a later one
