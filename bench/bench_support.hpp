@@ -98,13 +98,14 @@ inline void timeSteps(benchmark::State& state, Simulator& sim) {
   }
   state.counters["iterations/step"] = sim.lastHealth().projection_iterations;
   state.counters["factorizations/step"] = sim.lastHealth().factorizations;
+  state.counters["analyses/step"] = sim.lastHealth().analyses;
 }
 
 /// Steps `start` with `drive(sim)` (which sets the scene's targets and steps it) until
 /// `ready(start)`; then each iteration steps that state `window` times with `drive` (copying it
 /// is not timed). `per_step` is the mean step [s] over the window, substeps included,
-/// `factorizations/step` the mean Newton systems factorized a step [-], and `tears` the tears in
-/// the window.
+/// `factorizations/step` the mean Newton systems factorized a step [-], `analyses/step` the mean
+/// symbolic analyses of their patterns a step [-], and `tears` the tears in the window.
 template <typename Ready, typename Drive>
 void timeWindowFrom(benchmark::State& state, Simulator& start, const Ready& ready, int window,
                     const Drive& drive) {
@@ -112,6 +113,7 @@ void timeWindowFrom(benchmark::State& state, Simulator& start, const Ready& read
   Simulator sim = start;
   std::size_t tears = 0;
   long factorizations = 0;
+  long analyses = 0;
   for (auto _ : state) {
     state.PauseTiming();
     sim = start;
@@ -119,6 +121,7 @@ void timeWindowFrom(benchmark::State& state, Simulator& start, const Ready& read
     for (int i = 0; i < window; ++i) {
       drive(sim);
       factorizations += sim.lastHealth().factorizations;
+      analyses += sim.lastHealth().analyses;
     }
     state.PauseTiming();
     tears = sim.takeTearEvents().size();
@@ -128,6 +131,7 @@ void timeWindowFrom(benchmark::State& state, Simulator& start, const Ready& read
   state.counters["per_step"] =
       benchmark::Counter(steps, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.counters["factorizations/step"] = static_cast<double>(factorizations) / steps;
+  state.counters["analyses/step"] = static_cast<double>(analyses) / steps;
   state.counters["tears"] = static_cast<double>(tears);
 }
 

@@ -105,7 +105,10 @@ bool PatternCachedLdlt::analyze(const std::vector<Eigen::Triplet<double>>& entri
   a.upper.resize(size, size);
   a.upper.setFromTriplets(pattern.begin(), pattern.end());
   a.upper.makeCompressed();
-  if (!leave_out_zeros_ && !a.ldlt.analyzePattern(a.upper)) return false;
+  if (!leave_out_zeros_) {
+    ++factor_analyses_;
+    if (!a.ldlt.analyzePattern(a.upper)) return false;
+  }
   return placeEntries(entries);
 }
 
@@ -133,6 +136,7 @@ PatternCachedLdlt::NonzeroFit PatternCachedLdlt::nonzerosFitAnalysed() const {
 
 bool PatternCachedLdlt::analyzeNonzeros(bool grow) {
   ++zero_free_analyses_;
+  ++factor_analyses_;
   Analysis& a = *kept_.front();
   const Eigen::Index size = a.upper.rows();
   const int* outer = a.upper.outerIndexPtr();

@@ -28,10 +28,12 @@ ProjectionResult LengthConstraintProjection::project(
   // Contacts are rows of the Newton steps only: Gauss-Seidel is left to contact-free scenes.
   if (contacts != nullptr && contacts->empty()) contacts = nullptr;
   const long factorizations = newton_.factorizations();
+  const long analyses = newton_.analyses();
   ProjectionResult resting;
   if (contacts != nullptr && projectContactsFast(position, vertices, edges, limits, parameters,
                                                  gram, *contacts, resting)) {
     resting.factorizations = static_cast<int>(newton_.factorizations() - factorizations);
+    resting.analyses = static_cast<int>(newton_.analyses() - analyses);
     return resting;
   }
   ProjectionResult result =
@@ -39,6 +41,7 @@ ProjectionResult LengthConstraintProjection::project(
           ? projectGaussSeidel(position, edges, parameters)
           : projectFast(position, edges, parameters, gram, contacts, step_start);
   result.factorizations = static_cast<int>(newton_.factorizations() - factorizations);
+  result.analyses = static_cast<int>(newton_.analyses() - analyses);
   holdEdgesBetweenSupports(position, edges);
   return result;
 }

@@ -452,6 +452,7 @@ void Simulator::projectLengthConstraints() {
   }
   health_.projection_iterations = result.iterations;
   health_.factorizations = result.factorizations;
+  health_.analyses = result.analyses;
   health_.max_constraint_violation = result.max_violation;
   health_.projection_converged = result.converged;
   health_.force_mismatch = result.force_mismatch;

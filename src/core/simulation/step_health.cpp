@@ -9,6 +9,7 @@ void accumulateHealth(const StepHealth& substep, StepHealth& whole) {
       std::max(whole.max_constraint_violation, substep.max_constraint_violation);
   whole.projection_iterations += substep.projection_iterations;
   whole.factorizations += substep.factorizations;
+  whole.analyses += substep.analyses;
   whole.projection_converged = whole.projection_converged && substep.projection_converged;
   whole.force_mismatch = std::max(whole.force_mismatch, substep.force_mismatch);
   whole.max_penetration = std::max(whole.max_penetration, substep.max_penetration);

@@ -105,6 +105,9 @@ class PatternCachedLdlt {
   long analyses() const { return analyses_; }
   /// Analyses of the nonzero entries' pattern so far (leaveOutZeros()) [-].
   long zeroFreeAnalyses() const { return zero_free_analyses_; }
+  /// Symbolic analyses of the factor (elimination tree, column counts, the supernodal kernel's
+  /// supernodes) so far, of the listed pattern or, with leaveOutZeros(), of its nonzeros [-].
+  long factorAnalyses() const { return factor_analyses_; }
   /// Nonzeros of the last factor's L [-] (for tests and benchmarks).
   Eigen::Index factorNonZeros() const {
     return kept_.empty() ? 0 : kept_.front()->ldlt.factorNonZeros();
@@ -189,6 +192,7 @@ class PatternCachedLdlt {
   std::size_t direct_count_ = 0;
   double* direct_values_ = nullptr;  ///< the front's upper values while entries are added directly
   long zero_free_analyses_ = 0;
+  long factor_analyses_ = 0;
   mutable Eigen::VectorXd permuted_;  ///< a right-hand side in the permuted order
   long analyses_ = 0;
 };

@@ -32,6 +32,8 @@ struct ProjectionResult {
   double force_mismatch = 0.0;
   bool converged = false;  ///< max_violation, max_penetration, force_mismatch <= tolerance
   int factorizations = 0;  ///< Newton systems factorized [-]
+  /// Symbolic analyses of their patterns (StiffNewtonStep::analyses()) [-].
+  int analyses = 0;
 };
 
 /// Stage 3: limits every intact edge, stretch only, to

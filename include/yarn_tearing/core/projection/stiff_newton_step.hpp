@@ -87,6 +87,12 @@ class StiffNewtonStep {
   }
   /// Systems factorized since this object was made [-].
   long factorizations() const { return factorizations_; }
+  /// Symbolic analyses of the sparse factorizations since this object was made [-]
+  /// (PatternCachedLdlt::factorAnalyses()).
+  long analyses() const {
+    return general_factorization_.factorAnalyses() + condensed_factorization_.factorAnalyses() +
+           contact_factorization_.factorAnalyses();
+  }
   /// From now on in this projection, every Newton step pivots until its taut set holds.
   void pivotFully() { full_pivoting_ = true; }
   /// From now on in this projection, each Newton step's solve takes one pass of iterative

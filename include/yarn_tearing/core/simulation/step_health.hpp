@@ -12,6 +12,9 @@ struct StepHealth {
   int projection_iterations = 0;          ///< Newton steps or sweeps used
   /// Newton systems factorized; the others were solved with the last factors [-].
   int factorizations = 0;
+  /// Symbolic analyses of those systems' factors, each for a pattern the last factorization did
+  /// not have (the taut edges, the eliminated vertices or the contacts changed) [-].
+  int analyses = 0;
   bool projection_converged = true;  ///< violation and force mismatch within tolerance
   /// Largest distance [-, per edge length] between a vertex's correction and the one the final
   /// constraint forces along the final edge directions give (ProjectionResult::force_mismatch).
