@@ -329,9 +329,12 @@ bool SupernodalLdlt::analyzePattern(const Eigen::SparseMatrix<double>& upper) {
 void SupernodalLdlt::scheduleThreads() {
   const int supernodes = static_cast<int>(first_column_.size()) - 1;
   std::vector<int>& tree = scratch_a_;
-  tree.assign(supernodes, -1);
+  tree.resize(supernodes);
   std::vector<double> cost(static_cast<std::size_t>(supernodes), 0.0);
   for (int d = 0; d < supernodes; ++d) {
+    // Its parent: the supernode of its last column's parent, as in collectRows().
+    const int parent = parent_[first_column_[d + 1] - 1];
+    tree[d] = parent < 0 ? -1 : supernode_of_[parent];
     const Eigen::Index columns = first_column_[d + 1] - first_column_[d];
     const Eigen::Index rows = row_start_[d + 1] - row_start_[d];
     const int* row = rows_.data() + row_start_[d];
@@ -339,7 +342,6 @@ void SupernodalLdlt::scheduleThreads() {
     // d's rows below its columns, in runs of one later supernode's columns each, update it.
     for (Eigen::Index first = columns; first < rows;) {
       const int s = supernode_of_[row[first]];
-      if (first == columns) tree[d] = s;
       Eigen::Index end = first;
       while (end < rows && row[end] < first_column_[s + 1]) ++end;
       cost[s] += static_cast<double>((end - first) * (rows - first) * columns);
