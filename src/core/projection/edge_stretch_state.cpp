@@ -104,6 +104,12 @@ bool EdgeStretchState::wouldSwitch(std::size_t e, double m) const {
   return below || above;
 }
 
+void EdgeStretchState::resumeFlow(const EdgeSet& edges, std::size_t e) {
+  if (piece_[e] != begin_[e] || begin_[e] + 2 > end_[e]) return;
+  if (pending_[e]) expand(edges, e);
+  if (begin_[e] + 2 < end_[e]) set(e, begin_[e] + 1);  // else its second piece is the stop
+}
+
 double EdgeStretchState::settle(const EdgeSet& edges, std::size_t e, double m) {
   if (!(m > 0.0)) return release(edges, e);
   return wouldSwitch(e, m) ? set(e, nextPieceToward(edges, e, m)) : 0.0;

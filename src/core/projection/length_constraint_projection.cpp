@@ -65,6 +65,7 @@ bool LengthConstraintProjection::projectContactsFast(
   resting_fallback_.position = position;
   resting_fallback_.last_multiplier = last_multiplier_;
   resting_fallback_.was_taut = was_taut_;
+  resting_fallback_.was_flowing = was_flowing_;
   resting_fallback_.last_stiffness = last_stiffness_;
   resting_fallback_.last_time_step2 = last_time_step2_;
   resting_fallback_.newton_first_next = newton_first_next_;
@@ -89,6 +90,7 @@ bool LengthConstraintProjection::projectContactsFast(
   position = resting_fallback_.position;
   last_multiplier_.swap(resting_fallback_.last_multiplier);
   was_taut_.swap(resting_fallback_.was_taut);
+  was_flowing_.swap(resting_fallback_.was_flowing);
   last_stiffness_.swap(resting_fallback_.last_stiffness);
   last_time_step2_ = resting_fallback_.last_time_step2;
   newton_first_next_ = resting_fallback_.newton_first_next;
@@ -373,6 +375,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
   FastLoop loop;
   // The Newton steps do not keep vertices on faces (on_faces_): not for those.
   loop.newton_first = contacts == nullptr && !on_faces_ && newtonFirst(edges.size());
+  if (loop.newton_first) resumeFlow(edges);
   if (loop.newton_first && fast_contacts_ == nullptr) startFromLastCorrection(position, edges);
   ProjectionResult result;
   measureIterate(position, edges, contacts, result);
@@ -459,6 +462,13 @@ void LengthConstraintProjection::resetCorrectionDirections(std::size_t num_edges
   start_at_a_.assign(num_edges, 0);
   start_at_b_.assign(num_edges, 0);
   any_start_direction_ = false;
+}
+
+void LengthConstraintProjection::resumeFlow(const EdgeSet& edges) {
+  if (was_flowing_.size() != edges.size()) return;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    if (was_flowing_[e] && multiplier_[e] > 0.0) stretch_state_.resumeFlow(edges, e);
+  }
 }
 
 void LengthConstraintProjection::warmStartActiveSet(const EdgeSet& edges) {
@@ -561,7 +571,11 @@ void LengthConstraintProjection::fastIteration(std::vector<Eigen::Vector3d>& pos
 
 void LengthConstraintProjection::endFastProjection(const EdgeSet& edges, const FastLoop& loop,
                                                    bool converged) {
-  for (std::size_t e = 0; e < edges.size(); ++e) was_taut_[e] = multiplier_[e] > 0.0 ? 1 : 0;
+  was_flowing_.resize(edges.size());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    was_taut_[e] = multiplier_[e] > 0.0 ? 1 : 0;
+    was_flowing_[e] = was_taut_[e] && stretch_state_.flowing(e) ? 1 : 0;
+  }
   last_multiplier_ = multiplier_;
   if (!converged) computeSidewaysStiffness(edges);  // else forceMismatch's is current
   last_stiffness_.swap(sideways_stiffness_);

@@ -29,6 +29,15 @@ class EdgeStretchState {
   double settle(const EdgeSet& edges, std::size_t e, double m);
   /// Puts edge e on its first piece (m = 0: a slack edge neither flows nor is held).
   double release(const EdgeSet& edges, std::size_t e);
+  /// Whether edge e is on one of its flow pieces (past its first, short of the stop).
+  bool flowing(std::size_t e) const {
+    return piece_[e] > begin_[e] && piece_[e] + 1 < end_[e] && !pending_[e];
+  }
+  /// Puts edge e, on its first piece, on its first flow piece where it has one: for an edge that
+  /// flowed in the last step, whose yield force is the one it ended that step with, so that its
+  /// multiplier carried over lies at that piece's start to round-off and may fall on either
+  /// side of it.
+  void resumeFlow(const EdgeSet& edges, std::size_t e);
   /// True when multiplier `m` lies off edge e's current piece. A relative margin keeps an edge
   /// right at a kink (its largest stretch, say) from switching back and forth on round-off.
   bool wouldSwitch(std::size_t e, double m) const;

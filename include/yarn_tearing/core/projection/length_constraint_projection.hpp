@@ -166,6 +166,9 @@ class LengthConstraintProjection {
                       ContactSet* contacts, ProjectionResult& result);
   /// Every edge end corrected along the final directions.
   void resetCorrectionDirections(std::size_t num_edges);
+  /// Puts the edges that flowed at the end of the last projection back on their flow pieces
+  /// (EdgeStretchState::resumeFlow), where their multipliers start from the last ones.
+  void resumeFlow(const EdgeSet& edges);
   /// Adds the edges taut at the end of the last projection to the active set.
   void warmStartActiveSet(const EdgeSet& edges);
   /// Sets result.converged (violation, penetration, contacts settled, then force_mismatch) and
@@ -208,8 +211,10 @@ class LengthConstraintProjection {
   double last_move_ = 0.0;            ///< largest move of the last Newton step per edge length [-]
   std::vector<double> step_;          ///< candidate multipliers of a pivoting pass [kg*m]
   std::vector<std::uint8_t> active_;  ///< edges in the active set
-  std::vector<std::uint8_t> candidate_;     ///< intact edges with a movable vertex
-  std::vector<std::uint8_t> was_taut_;      ///< edges taut at the end of the last projection
+  std::vector<std::uint8_t> candidate_;  ///< intact edges with a movable vertex
+  std::vector<std::uint8_t> was_taut_;   ///< edges taut at the end of the last projection
+  /// Edges flowing at the end of the last projection (EdgeStretchState::flowing).
+  std::vector<std::uint8_t> was_flowing_;
   std::vector<double> target_;              ///< right-hand side of the complementarity problem
   std::vector<double> product_;             ///< K times a multiplier vector [m]
   std::vector<double> stretch_;             ///< a pass's stretch past the limit per edge [m]
@@ -232,6 +237,7 @@ class LengthConstraintProjection {
     std::vector<Eigen::Vector3d> position;  ///< the prediction [m]
     std::vector<double> last_multiplier;    ///< see last_multiplier_ [kg m]
     std::vector<std::uint8_t> was_taut;     ///< see was_taut_
+    std::vector<std::uint8_t> was_flowing;  ///< see was_flowing_
     std::vector<double> last_stiffness;     ///< see last_stiffness_ [-]
     double last_time_step2 = 1.0;           ///< see last_time_step2_ [s^2]
     bool newton_first_next = false;         ///< see newton_first_next_
