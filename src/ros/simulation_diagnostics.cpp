@@ -55,6 +55,8 @@ void SimulationDiagnostics::recordStep(const StepHealth& health, const Scene& sc
   max_residual_ = std::max(max_residual_, health.tension_residual);
   unconverged_ += health.projection_converged ? 0 : 1;
   substepped_ += health.substeps > 1 ? 1 : 0;
+  factorizations_ += static_cast<std::uint64_t>(std::max(health.factorizations, 0));
+  analyses_ += static_cast<std::uint64_t>(std::max(health.analyses, 0));
   finite_ = finite_ && std::isfinite(health.max_constraint_violation) &&
             std::isfinite(health.tension_residual);
 }
@@ -130,6 +132,9 @@ void SimulationDiagnostics::report(diagnostic_updater::DiagnosticStatusWrapper& 
   status.add("max tension residual [-]", max_residual_);
   status.add("unconverged steps", unconverged_);
   status.add("substepped steps", substepped_);
+  const double steps = std::max(static_cast<double>(steps_), 1.0);
+  status.add("mean factorizations per step [-]", static_cast<double>(factorizations_) / steps);
+  status.add("mean symbolic analyses per step [-]", static_cast<double>(analyses_) / steps);
   status.add("target real-time factor", pacing_.target_real_time_factor);
   status.add("achieved real-time factor", achieved_factor_);
   status.add("dropped steps (total)", pacing_.dropped_steps);
@@ -155,6 +160,8 @@ void SimulationDiagnostics::report(diagnostic_updater::DiagnosticStatusWrapper& 
   max_residual_ = 0.0;
   unconverged_ = 0;
   substepped_ = 0;
+  factorizations_ = 0;
+  analyses_ = 0;
   finite_ = true;
   restorations_ = 0;
   stage_seconds_.fill(0.0);

@@ -2,8 +2,9 @@
 """Through topics only: force_ramp pulls a pinned yarn until it tears; the break event's tension
 matches the closed-form breaking tension sigma_b * pi * r^2 from this test's own config (2 %), and
 force_ramp then ends; /diagnostics counts the step after the tear as taken in substeps (the
-recoil, doc/method.md, "Recoil substeps"); ~get_break_events returns the published event,
-numbered 0, and ~reset clears its log."""
+recoil, doc/method.md, "Recoil substeps") and reports the Newton systems' factorizations and
+analyses a step; ~get_break_events returns the published event, numbered 0, and ~reset clears
+its log."""
 import math
 import unittest
 
@@ -63,6 +64,15 @@ class TearingTest(unittest.TestCase):
 
         self.assertTrue(support.wait_until(lambda: substepped_steps() >= 1, timeout=5.0),
                         "/diagnostics never counted the tear's recoil step as substepped")
+        # Each report gives the Newton systems' mean factorizations and analyses a step: finite,
+        # and no more analyses than factorizations (only a factorized system is analysed).
+        for array in diagnostics.messages():
+            for status in array.status:
+                values = {value.key: value.value for value in status.values}
+                factorizations = float(values["mean factorizations per step [-]"])
+                analyses = float(values["mean symbolic analyses per step [-]"])
+                self.assertTrue(math.isfinite(factorizations) and factorizations >= 0.0)
+                self.assertTrue(0.0 <= analyses <= factorizations, (analyses, factorizations))
 
         # A consumer that lost events fetches them: the log holds exactly what was published.
         get_break_events = rospy.ServiceProxy(NODE + "/get_break_events", GetBreakEvents)

@@ -80,7 +80,9 @@ class SimulationDiagnostics {
   double max_violation_ = 0.0;  ///< [-]
   double max_residual_ = 0.0;   ///< [-]
   std::uint64_t unconverged_ = 0;
-  std::uint64_t substepped_ = 0;  ///< steps taken in substeps (a tear's recoil or a retry)
+  std::uint64_t substepped_ = 0;      ///< steps taken in substeps (a tear's recoil or a retry)
+  std::uint64_t factorizations_ = 0;  ///< Newton systems factorized (StepHealth::factorizations)
+  std::uint64_t analyses_ = 0;        ///< their symbolic analyses (StepHealth::analyses)
   bool finite_ = true;
   std::uint64_t restorations_ = 0;  ///< yarns restored from a non-finite state
   std::string last_restored_;       ///< name of the last one (clipped)
