@@ -84,9 +84,9 @@ class SupernodalLdlt {
     std::vector<double> product;   ///< an update's dense product
     std::vector<double> scaled;    ///< an update's rows scaled by D
   };
-  /// The supernodal tree (the supernode of each one's first row below its columns, -1 at roots)
-  /// and each supernode's elimination cost (its updates' and its own block's multiply-adds),
-  /// split over two threads: schedule_.
+  /// The supernodal tree (each supernode's parent: the supernode of its last column's parent in
+  /// the elimination tree, -1 at roots) and each supernode's elimination cost (its updates' and
+  /// its own block's multiply-adds), split over two threads: schedule_.
   void scheduleThreads();
   /// Subtracts supernode d's update from supernode s, whose rows are in work.local_row; `first`
   /// and `end` delimit d's rows within s's columns; `first` to d's last row is what it updates.
