@@ -1,6 +1,7 @@
 // EdgeStretchState::resumeFlow: an edge that flowed in the last step starts the next projection on
 // its flow piece, whose limit meets the elastic one at the yield force, and leaves it again under
-// a smaller multiplier; an edge that cannot flow before it breaks stays on its first piece.
+// a smaller multiplier; an edge that cannot flow before it breaks stays on its first piece. An
+// edge whose pieces are not built yet answers as one whose pieces are.
 #include "yarn_tearing/core/projection/edge_stretch_state.hpp"
 
 #include <gtest/gtest.h>
@@ -63,6 +64,40 @@ TEST(EdgeStretchState, AnEdgeThatCannotFlowBeforeItBreaksStaysOnItsFirstPiece) {
   EXPECT_FALSE(yarn.state.flowing(e));
   EXPECT_EQ(yarn.state.shift()[e], shift);
   EXPECT_EQ(yarn.state.baseLength()[e], base);
+}
+
+TEST(EdgeStretchState, AnEdgeWhosePiecesAreNotBuiltAnswersAsOneWhosePiecesAre) {
+  // `built` has its pieces built (taken onto its flow piece and released back to its first);
+  // `pending` has not: the same limits, switches and multipliers at a length, up to the stop.
+  YarnStretch pending(cottonLike());
+  YarnStretch built(cottonLike());
+  const EdgeSet& edges = built.scene.edges;
+  const std::size_t e = 3;
+  built.state.resumeFlow(edges, e);
+  built.state.release(edges, e);
+  const double dt = built.parameters.time_step;
+  const double yield = built.limits.flow_start[e] * dt * dt;  // [kg m]
+  const double rest = edges.rest_length[e];
+  const double breaking = rest + built.limits.max_stretch[e];
+  EXPECT_EQ(pending.state.shift()[e], built.state.shift()[e]);
+  EXPECT_EQ(pending.state.baseLength()[e], built.state.baseLength()[e]);
+  for (const double m : {0.0, 0.5 * yield, yield, 1.5 * yield}) {
+    EXPECT_EQ(pending.state.wouldSwitch(e, m), built.state.wouldSwitch(e, m)) << m;
+  }
+  for (const double fraction : {-0.5, 0.0, 0.001, 0.3, 0.7, 1.0, 1.2}) {
+    YarnStretch fresh(cottonLike());
+    const double length = rest + fraction * (breaking - rest);
+    EXPECT_EQ(fresh.state.multiplierAtLength(edges, e, length),
+              built.state.multiplierAtLength(edges, e, length))
+        << fraction;
+  }
+  pending.state.release(edges, e);
+  EXPECT_FALSE(pending.state.flowing(e));
+  pending.state.settle(edges, e, 1.5 * yield);
+  built.state.settle(edges, e, 1.5 * yield);
+  EXPECT_TRUE(pending.state.flowing(e));
+  EXPECT_EQ(pending.state.shift()[e], built.state.shift()[e]);
+  EXPECT_EQ(pending.state.baseLength()[e], built.state.baseLength()[e]);
 }
 
 }  // namespace

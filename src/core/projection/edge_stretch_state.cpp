@@ -13,7 +13,8 @@ void EdgeStretchState::reset(const EdgeSet& edges, const EdgeStretchLimits& limi
   pieces_.clear();
   begin_.resize(q);
   end_.resize(q);
-  pending_.assign(q, 0);
+  pending_.resize(q);
+  flow_start_.resize(q);
   piece_.resize(q);
   shift_.resize(q);
   base_length_.resize(q);
@@ -24,17 +25,18 @@ void EdgeStretchState::reset(const EdgeSet& edges, const EdgeStretchLimits& limi
     const double s = limits.constraintCompliance(e) / time_step2_;
     if (flow_start <= 0.0) {
       expand(edges, e);  // flowing from the start: its spring alone is past its yield stress
+      set(e, begin_[e]);
     } else if (flows && flow_start < limits.max_stretch[e] / s) {
-      // Elastic up to where its flow starts; the rest is built if a multiplier gets there.
-      begin_[e] = static_cast<std::uint32_t>(pieces_.size());
-      pieces_.push_back(Piece{0.0, edges.rest_length[e], s});
-      pieces_.push_back(Piece{flow_start, 0.0, 0.0});
-      end_[e] = begin_[e] + 2;
+      // Elastic up to where its flow starts; its pieces are built if a multiplier gets there.
       pending_[e] = 1;
+      flow_start_[e] = flow_start;
+      base_length_[e] = edges.rest_length[e];
+      shift_[e] = s;
     } else {
+      pending_[e] = 0;
       buildPieces(edges, e, {}, s);
+      set(e, begin_[e]);
     }
-    set(e, begin_[e]);
   }
 }
 
@@ -85,19 +87,18 @@ void EdgeStretchState::buildPieces(const EdgeSet& edges, std::size_t e,
 }
 
 std::uint32_t EdgeStretchState::nextPieceToward(const EdgeSet& edges, std::size_t e, double m) {
-  const std::uint32_t k = piece_[e];
-  if (k + 1 < end_[e] && m >= pieces_[k + 1].start) {
-    if (pending_[e]) {
-      expand(edges, e);  // its first piece is the same: the next is begin_ + 1
-      return begin_[e] + 1;
-    }
-    return k + 1;
+  if (pending_[e]) {
+    expand(edges, e);  // its first piece is the same: the next is begin_ + 1
+    return m >= pieces_[begin_[e] + 1].start ? begin_[e] + 1 : begin_[e];
   }
+  const std::uint32_t k = piece_[e];
+  if (k + 1 < end_[e] && m >= pieces_[k + 1].start) return k + 1;
   if (k > begin_[e] && m < pieces_[k].start) return k - 1;
   return k;
 }
 
 bool EdgeStretchState::wouldSwitch(std::size_t e, double m) const {
+  if (pending_[e]) return m > flow_start_[e] * (1.0 + kMargin);
   const std::uint32_t k = piece_[e];
   const bool below = k > begin_[e] && m < pieces_[k].start * (1.0 - kMargin);
   const bool above = k + 1 < end_[e] && m > pieces_[k + 1].start * (1.0 + kMargin);
@@ -105,8 +106,8 @@ bool EdgeStretchState::wouldSwitch(std::size_t e, double m) const {
 }
 
 void EdgeStretchState::resumeFlow(const EdgeSet& edges, std::size_t e) {
-  if (piece_[e] != begin_[e] || begin_[e] + 2 > end_[e]) return;
   if (pending_[e]) expand(edges, e);
+  if (piece_[e] != begin_[e] || begin_[e] + 2 > end_[e]) return;
   if (begin_[e] + 2 < end_[e]) set(e, begin_[e] + 1);  // else its second piece is the stop
 }
 
@@ -116,12 +117,15 @@ double EdgeStretchState::settle(const EdgeSet& edges, std::size_t e, double m) {
 }
 
 double EdgeStretchState::release(const EdgeSet& /*edges*/, std::size_t e) {
-  return set(e, begin_[e]);
+  return pending_[e] ? 0.0 : set(e, begin_[e]);
 }
 
 double EdgeStretchState::multiplierAtLength(const EdgeSet& edges, std::size_t e, double length) {
+  if (pending_[e]) {
+    if (!(length > base_length_[e])) return 0.0;  // on its first piece
+    expand(edges, e);
+  }
   if (!(length > pieces_[begin_[e]].base)) return 0.0;
-  if (pending_[e]) expand(edges, e);
   for (std::uint32_t k = begin_[e]; k < end_[e]; ++k) {
     const double m = (length - pieces_[k].base) / pieces_[k].shift;
     if (k + 1 == end_[e] || m < pieces_[k + 1].start) return std::max(m, pieces_[k].start);

@@ -31,7 +31,7 @@ class EdgeStretchState {
   double release(const EdgeSet& edges, std::size_t e);
   /// Whether edge e is on one of its flow pieces (past its first, short of the stop).
   bool flowing(std::size_t e) const {
-    return piece_[e] > begin_[e] && piece_[e] + 1 < end_[e] && !pending_[e];
+    return !pending_[e] && piece_[e] > begin_[e] && piece_[e] + 1 < end_[e];
   }
   /// Puts edge e, on its first piece, on its first flow piece where it has one: for an edge that
   /// flowed in the last step, whose yield force is the one it ended that step with, so that its
@@ -83,12 +83,14 @@ class EdgeStretchState {
   const EdgeStretchLimits* limits_ = nullptr;  ///< of the last reset
   double time_step2_ = 1.0;                    ///< dt^2 [s^2]
   std::vector<Piece> pieces_;                  ///< every edge's pieces, by rising start
-  std::vector<std::uint32_t> begin_;           ///< edge e's pieces: [begin_[e], end_[e])
-  std::vector<std::uint32_t> end_;             ///< see begin_
-  /// Edge e's pieces past its first are still to be built: its second entry only marks where
-  /// its flow starts.
+  /// Edge e's pieces: [begin_[e], end_[e]), none while it is pending.
+  std::vector<std::uint32_t> begin_;
+  std::vector<std::uint32_t> end_;  ///< see begin_
+  /// Edge e's pieces are still to be built: it is on its first, elastic piece (B = L, S = s in
+  /// base_length_ and shift_), and its flow starts at flow_start_[e].
   std::vector<std::uint8_t> pending_;
-  std::vector<std::uint32_t> piece_;  ///< each edge's current piece (into pieces_)
+  std::vector<double> flow_start_;  ///< a pending edge's multiplier where it starts to flow [kg m]
+  std::vector<std::uint32_t> piece_;  ///< each edge's current piece (into pieces_), if built
   std::vector<double> shift_;         ///< S [1/kg]
   std::vector<double> base_length_;   ///< B [m]
   std::vector<FlowKnot> knots_;       ///< scratch of expand()
