@@ -10,24 +10,32 @@ namespace {
 
 /// The stresses [Pa] on the reference curve between which edge e's plastic elongation is linear
 /// in the stress, from `low` (the soft spring's alone) to `cap` (its breaking point): the curve's
-/// points and the crossings of the current plastic strain `plastic`.
+/// points and the crossings of the current plastic strain `plastic`; with the curve's plastic
+/// strain at each [-].
 void flowBreakpoints(const StressStrainCurve& curve, double low, double cap, double plastic,
-                     std::vector<double>& stresses) {
+                     FlowBreakpoints& breakpoints) {
+  std::vector<double>& stresses = breakpoints.stress;
+  std::vector<double>& at = breakpoints.plastic_strain;
   stresses.clear();
   stresses.push_back(low);
   for (const CurvePoint& p : curve.points()) {
     if (p.stress > low && p.stress < cap) stresses.push_back(p.stress);
   }
   if (cap > low) stresses.push_back(cap);
+  at.resize(stresses.size());
+  for (std::size_t i = 0; i < stresses.size(); ++i)
+    at[i] = curve.plasticStrainAtStress(stresses[i]);
   // Where the curve's plastic strain crosses the edge's own, max(eps_p,n, eps_p) kinks.
   for (std::size_t i = 0; i + 1 < stresses.size(); ++i) {
-    const double e0 = curve.plasticStrainAtStress(stresses[i]) - plastic;
-    const double e1 = curve.plasticStrainAtStress(stresses[i + 1]) - plastic;
+    const double e0 = at[i] - plastic;
+    const double e1 = at[i + 1] - plastic;
     if ((e0 < 0.0) == (e1 < 0.0) || e0 == e1) continue;
     const double t = -e0 / (e1 - e0);
     if (t <= 0.0 || t >= 1.0) continue;
-    stresses.insert(stresses.begin() + static_cast<std::ptrdiff_t>(i) + 1,
-                    stresses[i] + t * (stresses[i + 1] - stresses[i]));
+    const double crossing = stresses[i] + t * (stresses[i + 1] - stresses[i]);
+    const auto next = static_cast<std::ptrdiff_t>(i) + 1;
+    stresses.insert(stresses.begin() + next, crossing);
+    at.insert(at.begin() + next, curve.plasticStrainAtStress(crossing));
     ++i;
   }
 }
@@ -74,7 +82,7 @@ void computeFlowLimits(const Scene& scene, EdgeStretchLimits& limits) {
 }
 
 void flowKnots(const EdgeSet& edges, const std::vector<Yarn>& yarns, std::size_t e,
-               std::vector<FlowKnot>& knots) {
+               std::vector<FlowKnot>& knots, FlowBreakpoints& breakpoints) {
   knots.clear();
   const StressStrainCurve& curve = yarns[edges.yarn[e]].material.curve;
   const double scale = edges.rate_factor[e] * edges.area[e];  // T = f A sigma_ref [m^2]
@@ -82,18 +90,21 @@ void flowKnots(const EdgeSet& edges, const std::vector<Yarn>& yarns, std::size_t
   const double plastic = edges.plastic_strain[e];
   const double original = edges.original_rest_length[e];
   const double cap = curve.stressAtStrain(edges.breaking_strain[e]);
-  std::vector<double> stresses;
-  flowBreakpoints(curve, spring / scale, cap, plastic, stresses);
-  const auto elongation = [&](double stress) {
-    return original * std::max(curve.plasticStrainAtStress(std::min(stress, cap)) - plastic, 0.0);
+  flowBreakpoints(curve, spring / scale, cap, plastic, breakpoints);
+  const std::vector<double>& stresses = breakpoints.stress;
+  // The plastic elongation at breakpoint i [m] (the cap's plastic strain where it is capped).
+  const auto elongation = [&](std::size_t i) {
+    const double at =
+        stresses[i] <= cap ? breakpoints.plastic_strain[i] : curve.plasticStrainAtStress(cap);
+    return original * std::max(at - plastic, 0.0);
   };
   for (std::size_t i = 0; i < stresses.size(); ++i) {
     FlowKnot knot;
     knot.force = std::max(scale * stresses[i] - spring, 0.0);
-    knot.elongation = elongation(stresses[i]);
+    knot.elongation = elongation(i);
     if (i + 1 < stresses.size()) {
       const double span = scale * (stresses[i + 1] - stresses[i]);
-      knot.slope = span > 0.0 ? (elongation(stresses[i + 1]) - knot.elongation) / span : 0.0;
+      knot.slope = span > 0.0 ? (elongation(i + 1) - knot.elongation) / span : 0.0;
     }
     // A kink that changes nothing (no flow before and after) is left out.
     const bool flat_start = knots.empty() && knot.elongation == 0.0 && knot.slope == 0.0;

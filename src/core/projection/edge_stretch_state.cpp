@@ -41,7 +41,7 @@ void EdgeStretchState::reset(const EdgeSet& edges, const EdgeStretchLimits& limi
 }
 
 void EdgeStretchState::expand(const EdgeSet& edges, std::size_t e) {
-  flowKnots(edges, *limits_->yarns, e, knots_);
+  flowKnots(edges, *limits_->yarns, e, knots_, breakpoints_);
   buildPieces(edges, e, knots_, limits_->constraintCompliance(e) / time_step2_);
   pending_[e] = 0;
   piece_[e] = begin_[e];  // a pending edge is on its first piece, which this one repeats

@@ -80,11 +80,19 @@ void computeStretchLimits(const Scene& scene, const SimulationParameters& parame
 /// kinks are found only for the edges a projection takes past flow_start (flowKnots).
 void computeFlowLimits(const Scene& scene, EdgeStretchLimits& limits);
 
+/// Scratch of flowKnots(): the stresses [Pa] between which an edge's plastic elongation is linear
+/// in the stress, and the reference curve's plastic strain at each [-].
+struct FlowBreakpoints {
+  std::vector<double> stress;
+  std::vector<double> plastic_strain;
+};
+
 /// Edge e's plastic flow within the step as kinks by rising constraint force T_c [N]: the
 /// plastic elongation L0 (max(eps_p,n, eps_p((T_s + T_c) / (f A))) - eps_p,n), eps_p the
 /// curve's plastic strain at a stress, flow stopping at the edge's breaking point as in the
-/// material update (doc/method.md, "Plastic flow within the step"). Replaces `knots`.
+/// material update (doc/method.md, "Plastic flow within the step"). Replaces `knots`;
+/// `breakpoints` is scratch.
 void flowKnots(const EdgeSet& edges, const std::vector<Yarn>& yarns, std::size_t e,
-               std::vector<FlowKnot>& knots);
+               std::vector<FlowKnot>& knots, FlowBreakpoints& breakpoints);
 
 }  // namespace yarn_tearing

@@ -94,6 +94,7 @@ class EdgeStretchState {
   std::vector<double> shift_;         ///< S [1/kg]
   std::vector<double> base_length_;   ///< B [m]
   std::vector<FlowKnot> knots_;       ///< scratch of expand()
+  FlowBreakpoints breakpoints_;       ///< scratch of expand()
 };
 
 }  // namespace yarn_tearing
