@@ -1,6 +1,12 @@
 // A step that overflows (a force of 1e300 N: finite, but past anything the simulation can
-// represent) restores that yarn to its initial state; the other yarn goes on untouched.
+// represent) restores that yarn to its initial state; the other yarn goes on untouched. A
+// non-finite value in any of the quantities nonFiniteYarns() checks names its yarn.
+#include "yarn_tearing/core/simulation/nonfinite_recovery.hpp"
+
 #include <gtest/gtest.h>
+
+#include <functional>
+#include <limits>
 
 #include "test_support.hpp"
 
@@ -48,6 +54,40 @@ TEST(NonFiniteRecovery, HealthyStepsRestoreNothing) {
   for (int i = 0; i < 10; ++i) {
     sim.step();
     EXPECT_TRUE(sim.lastHealth().restored_yarns.empty());
+  }
+}
+
+TEST(NonFiniteRecovery, ANonFiniteValueInAnyCheckedQuantityNamesItsYarn) {
+  YarnSpec second = hangingYarn();
+  second.name = "second";
+  second.start = Eigen::Vector3d(0.1, 0.0, 0.0);
+  const Scene healthy = Simulator(SimulationParameters{}, {hangingYarn(), second}).scene();
+  const std::vector<Eigen::Vector3d> no_force(healthy.vertices.size(), Eigen::Vector3d::Zero());
+  EXPECT_TRUE(nonFiniteYarns(healthy, no_force).empty());
+  const std::uint32_t v = healthy.globalVertex(1, 3);
+  const std::uint32_t e = healthy.yarns[1].first_edge + 2;
+  using Spoil = std::function<void(Scene&, std::vector<Eigen::Vector3d>&, double)>;
+  const std::vector<std::pair<const char*, Spoil>> spoils = {
+      {"position", [&](Scene& s, auto&, double x) { s.vertices.position[v].y() = x; }},
+      {"velocity", [&](Scene& s, auto&, double x) { s.vertices.velocity[v].z() = x; }},
+      {"support force", [&](Scene&, auto& f, double x) { f[v].x() = x; }},
+      {"rest length", [&](Scene& s, auto&, double x) { s.edges.rest_length[e] = x; }},
+      {"strain limit", [&](Scene& s, auto&, double x) { s.edges.strain_limit[e] = x; }},
+      {"tension", [&](Scene& s, auto&, double x) { s.edges.tension[e] = x; }},
+      {"spring tension", [&](Scene& s, auto&, double x) { s.edges.spring_tension[e] = x; }},
+      {"stress", [&](Scene& s, auto&, double x) { s.edges.stress[e] = x; }},
+      {"strain", [&](Scene& s, auto&, double x) { s.edges.strain[e] = x; }},
+      {"plastic strain", [&](Scene& s, auto&, double x) { s.edges.plastic_strain[e] = x; }},
+      {"strain rate", [&](Scene& s, auto&, double x) { s.edges.strain_rate[e] = x; }},
+  };
+  for (const double bad :
+       {std::numeric_limits<double>::quiet_NaN(), -std::numeric_limits<double>::infinity()}) {
+    for (const auto& [name, spoil] : spoils) {
+      Scene scene = healthy;
+      std::vector<Eigen::Vector3d> force = no_force;
+      spoil(scene, force, bad);
+      EXPECT_EQ(nonFiniteYarns(scene, force), std::vector<std::uint32_t>{1}) << name << " " << bad;
+    }
   }
 }
 

@@ -23,8 +23,9 @@ void flowBreakpoints(const StressStrainCurve& curve, double low, double cap, dou
   }
   if (cap > low) stresses.push_back(cap);
   at.resize(stresses.size());
-  for (std::size_t i = 0; i < stresses.size(); ++i)
+  for (std::size_t i = 0; i < stresses.size(); ++i) {
     at[i] = curve.plasticStrainAtStress(stresses[i]);
+  }
   // Where the curve's plastic strain crosses the edge's own, max(eps_p,n, eps_p) kinks.
   for (std::size_t i = 0; i + 1 < stresses.size(); ++i) {
     const double e0 = at[i] - plastic;
