@@ -170,8 +170,9 @@ bool StiffNewtonStep::solveWithLastFactor(int rows, const std::vector<Eigen::Vec
   solution_.setZero(rows);
   double last_change = 0.0;  // the last pass's correction [mixed units]
   for (int pass = 0; pass < kReusePasses; ++pass) {
-    exactResidual(edges, position, inverse_mass, multiplier, stretch_state);
-    if (!solveAssembled(residual_, correction_)) return false;
+    // From a zero solution the residual is the right-hand side.
+    if (pass > 0) exactResidual(edges, position, inverse_mass, multiplier, stretch_state);
+    if (!solveAssembled(pass > 0 ? residual_ : rhs_, correction_)) return false;
     solution_ += correction_;
     const double change = correction_.lpNorm<Eigen::Infinity>();
     const double goal = kReuseTolerance * solution_.lpNorm<Eigen::Infinity>();
