@@ -3,7 +3,8 @@
 //   BM_FabricHeldAtCorners/N vs BM_FabricAtRest/N: an N x N plain weave held at its two top
 //     corners, settled, against the same weave hanging from its whole first row.
 //   BM_FabricCornersDrawnApart/16 vs BM_FabricAtRest/16: the node's fabric_draw scene from its
-//     first tear on (the tearing and the torn patch flapping from its corners).
+//     first tear on (the tearing and the torn patch flapping from its corners), without air;
+//     BM_FabricCornersDrawnApartInAir/16 the same in air (air_damping of config/fabric.yaml).
 //   BM_FabricCornersDrawnTaut/16 vs BM_FabricAtRest/16: the same scene drawn, before its first
 //     tear.
 //   BM_FabricCornersSwinging/N vs BM_FabricAtRest/N: the same scene before it is drawn, the patch
@@ -51,10 +52,11 @@ void BM_FabricHeldAtCorners(benchmark::State& state) {
 
 /// The scene of tools/measure_fabric_draw.py: a `side` x `side` cotton patch, 8 x 8 cm, 2 %
 /// crimp, pinned at its two top corners, which from 0.3 s on are drawn apart along the weft at
-/// 2 cm/s each (drive()).
+/// 2 cm/s each (drive()); `air_damping` [N s/m^2] as SimulationParameters::air_damping.
 class CornersDrawnApart {
  public:
-  explicit CornersDrawnApart(int side) : sim_(SimulationParameters{}, {}, {patch(side)}) {
+  explicit CornersDrawnApart(int side, double air_damping = 0.0)
+      : sim_(parameters(air_damping), {}, {patch(side)}) {
     left_ = sim_.scene().fabricVertex(0, 0, 0);
     right_ = sim_.scene().fabricVertex(0, 0, -1);
     left_start_ = sim_.scene().vertices.position[left_];
@@ -76,6 +78,11 @@ class CornersDrawnApart {
   static constexpr double kDrawSpeed = 0.02;  ///< each corner's speed [m/s]
 
  private:
+  static SimulationParameters parameters(double air_damping) {
+    SimulationParameters parameters;
+    parameters.air_damping = air_damping;
+    return parameters;
+  }
   static FabricSpec patch(int side) {
     FabricSpec spec = plainWeave(side, side, 0.08 / (side - 1));
     spec.warp_crimp = 0.02;
@@ -90,12 +97,25 @@ class CornersDrawnApart {
   Eigen::Vector3d right_start_;
 };
 
+/// The air damping of config/fabric.yaml [N s/m^2].
+constexpr double kFabricAirDamping = 1.0e-3;
+
 /// CornersDrawnApart of range(0) x range(0) from its first tear: each iteration steps that
 /// state kWindow times, 0.6 s (copying it is not timed): the tearing and the torn patch flapping
 /// from its corners. Reference: BM_FabricAtRest/16.
 void BM_FabricCornersDrawnApart(benchmark::State& state) {
   constexpr int kWindow = 600;
   CornersDrawnApart scene(static_cast<int>(state.range(0)));
+  timeWindowFromFirstTear(state, scene.start(), 3.0, kWindow,
+                          [&scene](Simulator& sim) { scene.drive(sim); });
+}
+
+/// BM_FabricCornersDrawnApart in air: air_damping 1e-3 N s/m^2, as config/fabric.yaml and the
+/// fabric demo (about a woven sheet's drag at 1 m/s shared over its yarns, doc/performance.md).
+/// Reference: BM_FabricAtRest/16.
+void BM_FabricCornersDrawnApartInAir(benchmark::State& state) {
+  constexpr int kWindow = 600;
+  CornersDrawnApart scene(static_cast<int>(state.range(0)), kFabricAirDamping);
   timeWindowFromFirstTear(state, scene.start(), 3.0, kWindow,
                           [&scene](Simulator& sim) { scene.drive(sim); });
 }
@@ -200,6 +220,11 @@ void BM_DiagonalGrid(benchmark::State& state) {
 
 BENCHMARK(BM_FabricHeldAtCorners)->Arg(32)->Arg(64)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FabricCornersDrawnApart)->Arg(16)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_FabricCornersDrawnApartInAir)
+    ->Arg(16)
+    ->Arg(32)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 BENCHMARK(BM_FabricCornersDrawnTaut)->Arg(16)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_FabricCornersSwinging)->Arg(16)->Arg(32)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_PatchObstacle)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);

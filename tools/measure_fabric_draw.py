@@ -3,14 +3,16 @@ two top corners is drawn apart until it tears: test/ros/fabric_corners.launch (a
 cotton plain weave, 8 x 8 cm, its top corners pinned, then grasped by a gripper that draws them
 apart along the weft at 2 cm/s each in simulated time; real_time_factor 1, /use_sim_time).
 
-For each size given (default: 16 and 32) it prints the achieved real-time factor (simulated
+For each scene given (default: 16, 32, 16@1e-3 and 32@1e-3: SIZE without air, SIZE@AIR_DAMPING
+with the node's air_damping [N s/m^2], 1e-3 being config/fabric.yaml's) it prints the achieved
+real-time factor (simulated
 seconds of fabric_states' stamps per wall second) while the grippers draw the patch before its
 first tear (from the simulated time stamped on the gripper's first moving grasp), and over the
 tearing (from 0.1 s before the first tear to 0.5 s after the last), the
 tears, the steps the node dropped and the costliest stage of its loop. It reports and never
 fails on the figures (exit 0); it exits 1 only when the scene cannot be run.
 
-  tools/measure_live.sh fabric_draw [size ...]"""
+  tools/measure_live.sh fabric_draw [SIZE[@AIR_DAMPING] ...]"""
 import sys
 import time
 
@@ -37,8 +39,10 @@ def moving(grasp):
     return not grasp.release and (v.x != 0.0 or v.y != 0.0 or v.z != 0.0)
 
 
-def measure(size):
-    with launched("fabric_corners.launch", "size:=%d" % size,
+def measure(size, air_damping):
+    name = "fabric %d x %d%s" % (size, size, " in air (air_damping %g)" % air_damping
+                                 if air_damping > 0.0 else "")
+    with launched("fabric_corners.launch", "size:=%d" % size, "air_damping:=%r" % air_damping,
                   node_name="measure_fabric_draw") as rospy:
         from yarn_tearing.msg import BreakEvent, FabricStateArray, Grasp
         states = []  # (wall, sim time)
@@ -55,18 +59,18 @@ def measure(size):
         diagnostics = Diagnostics(rospy)
         if not wait(lambda: draws and states and states[-1][1] >= draws[0], STARTUP):
             if len(states) < 2:
-                print("fabric %d x %d: no states within %.0f s" % (size, size, STARTUP))
+                print("%s: no states within %.0f s" % (name, STARTUP))
                 return False
-            print("fabric %d x %d held by its top corners: achieved real-time factor %.3f pinned, "
+            print("%s held by its top corners: achieved real-time factor %.3f pinned, "
                   "to be grasped from %.1f s and drawn (t = %.3f s simulated after %.0f s wall, "
                   "%s; tears %d)" %
-                  (size, size, factor(states, states[0][0], states[-1][0]), DRAW_START,
+                  (name, factor(states, states[0][0], states[-1][0]), DRAW_START,
                    states[-1][1], STARTUP,
                    "drawn from %.3f s" % draws[0] if draws else "not yet drawn", len(tears)))
             return True
         drawn_from = next(w for w, t in states if t >= draws[0])
         if not wait(lambda: tears, FIRST_TEAR):
-            print("fabric %d x %d: no tear within %.0f s" % (size, size, FIRST_TEAR))
+            print("%s: no tear within %.0f s" % (name, FIRST_TEAR))
             return False
         deadline = time.monotonic() + RUN_TIMEOUT
         while time.monotonic() < deadline and states[-1][1] < tears[-1][1] + QUIET_AFTER:
@@ -75,19 +79,26 @@ def measure(size):
         start = next((w for w, t in states if t >= first_sim - 0.1), first_wall)
         end = next((w for w, t in states if t >= tears[-1][1] + QUIET_AFTER), states[-1][0])
         stages = diagnostics.during(start, end, "costliest stage")
-        print("fabric %d x %d held by its top corners, drawn apart at 2 cm/s each: achieved "
+        print("%s held by its top corners, drawn apart at 2 cm/s each: achieved "
               "real-time factor %.3f drawn before the first tear, %.3f over the tearing "
               "(%d tears from t = %.3f to %.3f s simulated, %.1f s wall); dropped steps %d; "
               "costliest stage %s" %
-              (size, size, factor(states, drawn_from, first_wall), factor(states, start, end),
+              (name, factor(states, drawn_from, first_wall), factor(states, start, end),
                len(tears), first_sim, tears[-1][1], end - start,
                diagnostics.dropped_between(drawn_from, end),
                max(set(stages), key=stages.count) if stages else "?"))
         return True
 
 
+def scene(argument):
+    """SIZE or SIZE@AIR_DAMPING: (size, air damping [N s/m^2])."""
+    size, _, air_damping = argument.partition("@")
+    return int(size), float(air_damping or 0.0)
+
+
 def main():
-    return run_each(__file__, sys.argv[1:], [16, 32], lambda size: measure(int(size)))
+    return run_each(__file__, sys.argv[1:], ["16", "32", "16@1e-3", "32@1e-3"],
+                    lambda argument: measure(*scene(argument)))
 
 
 if __name__ == "__main__":

@@ -2,7 +2,7 @@
 # Reports the node's achieved real-time factor in a user's scene, through its topics, from the
 # catkin workspace that tools/build.sh made. Reporting only: the figures never fail it.
 #   tools/measure_live.sh table_drag [real_time_factor ...]   (tools/measure_table_drag.py; 1 and 0)
-#   tools/measure_live.sh fabric_draw [size ...]               (tools/measure_fabric_draw.py; 16 and 32)
+#   tools/measure_live.sh fabric_draw [SIZE[@AIR_DAMPING] ...] (tools/measure_fabric_draw.py; 16, 32, both in air)
 # Each ends within the time limit given by YARN_TEARING_MEASURE_LIMIT [s] (default 240).
 set -euo pipefail
 
