@@ -111,7 +111,7 @@ void BM_FabricCornersDrawnApart(benchmark::State& state) {
 }
 
 /// BM_FabricCornersDrawnApart in air: air_damping 1e-3 N s/m^2, as config/fabric.yaml and the
-/// fabric demo (about a woven sheet's drag at 1 m/s shared over its yarns, doc/performance.md).
+/// fabric demo (about a woven sheet's drag at 0.5 m/s shared over its yarns, doc/performance.md).
 /// Reference: BM_FabricAtRest/16.
 void BM_FabricCornersDrawnApartInAir(benchmark::State& state) {
   constexpr int kWindow = 600;

@@ -5,12 +5,11 @@ apart along the weft at 2 cm/s each in simulated time; real_time_factor 1, /use_
 
 For each scene given (default: 16, 32, 16@1e-3 and 32@1e-3: SIZE without air, SIZE@AIR_DAMPING
 with the node's air_damping [N s/m^2], 1e-3 being config/fabric.yaml's) it prints the achieved
-real-time factor (simulated
-seconds of fabric_states' stamps per wall second) while the grippers draw the patch before its
-first tear (from the simulated time stamped on the gripper's first moving grasp), and over the
-tearing (from 0.1 s before the first tear to 0.5 s after the last), the
-tears, the steps the node dropped and the costliest stage of its loop. It reports and never
-fails on the figures (exit 0); it exits 1 only when the scene cannot be run.
+real-time factor (simulated seconds of fabric_states' stamps per wall second) while the grippers
+draw the patch before its first tear (from the simulated time stamped on the gripper's first
+moving grasp), and over the tearing (from 0.1 s before the first tear to 0.5 s after the last),
+the tears, the steps the node dropped and the costliest stage of its loop. It reports and never
+fails on the figures (exit 0); it exits 1 only when a scene is malformed or cannot be run.
 
   tools/measure_live.sh fabric_draw [SIZE[@AIR_DAMPING] ...]"""
 import sys
@@ -91,9 +90,13 @@ def measure(size, air_damping):
 
 
 def scene(argument):
-    """SIZE or SIZE@AIR_DAMPING: (size, air damping [N s/m^2])."""
+    """SIZE or SIZE@AIR_DAMPING: (size, air damping [N s/m^2]); exits 1 on anything else."""
     size, _, air_damping = argument.partition("@")
-    return int(size), float(air_damping or 0.0)
+    try:
+        return int(size), float(air_damping or 0.0)
+    except ValueError:
+        sys.exit("measure_fabric_draw: '%s' is not SIZE or SIZE@AIR_DAMPING (16, 32@1e-3)"
+                 % argument)
 
 
 def main():
