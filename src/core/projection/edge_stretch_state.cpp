@@ -14,7 +14,6 @@ void EdgeStretchState::reset(const EdgeSet& edges, const EdgeStretchLimits& limi
   begin_.resize(q);
   end_.resize(q);
   pending_.resize(q);
-  flow_start_.resize(q);
   piece_.resize(q);
   shift_.resize(q);
   base_length_.resize(q);
@@ -29,7 +28,6 @@ void EdgeStretchState::reset(const EdgeSet& edges, const EdgeStretchLimits& limi
     } else if (flows && flow_start < limits.max_stretch[e] / s) {
       // Elastic up to where its flow starts; its pieces are built if a multiplier gets there.
       pending_[e] = 1;
-      flow_start_[e] = flow_start;
       base_length_[e] = edges.rest_length[e];
       shift_[e] = s;
     } else {
@@ -98,7 +96,7 @@ std::uint32_t EdgeStretchState::nextPieceToward(const EdgeSet& edges, std::size_
 }
 
 bool EdgeStretchState::wouldSwitch(std::size_t e, double m) const {
-  if (pending_[e]) return m > flow_start_[e] * (1.0 + kMargin);
+  if (pending_[e]) return m > limits_->flow_start[e] * time_step2_ * (1.0 + kMargin);
   const std::uint32_t k = piece_[e];
   const bool below = k > begin_[e] && m < pieces_[k].start * (1.0 - kMargin);
   const bool above = k + 1 < end_[e] && m > pieces_[k + 1].start * (1.0 + kMargin);

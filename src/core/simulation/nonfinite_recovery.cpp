@@ -1,16 +1,10 @@
 #include "yarn_tearing/core/simulation/nonfinite_recovery.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace yarn_tearing {
 namespace {
-
-bool edgeIsFinite(const EdgeSet& edges, std::size_t e) {
-  return std::isfinite(edges.rest_length[e]) && std::isfinite(edges.strain_limit[e]) &&
-         std::isfinite(edges.tension[e]) && std::isfinite(edges.spring_tension[e]) &&
-         std::isfinite(edges.stress[e]) && std::isfinite(edges.strain[e]) &&
-         std::isfinite(edges.plastic_strain[e]) && std::isfinite(edges.strain_rate[e]);
-}
 
 /// Whether `count` values from `values` are all finite: 0 x is 0 for each finite x and NaN for
 /// an infinite or NaN one, and a sum with a NaN is NaN (a vectorized sum, no branch per value).
@@ -19,51 +13,41 @@ bool allFinite(const double* values, std::size_t count) {
          0.0;
 }
 
-bool allFinite(const std::vector<double>& values) {
-  return allFinite(values.data(), values.size());
-}
+bool allFinite(double value) { return std::isfinite(value); }
+bool allFinite(const Eigen::Vector3d& value) { return value.allFinite(); }
 
-bool allFinite(const std::vector<Eigen::Vector3d>& values) {
-  // A Vector3d is three packed doubles.
-  static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double));
-  return values.empty() || allFinite(values.front().data(), 3 * values.size());
-}
-
-/// Whether every value nonFiniteYarns() checks is finite, array by array: the vectorized
-/// screen of the common case, before the search for the yarns of a non-finite one.
-bool sceneIsFinite(const Scene& scene, const std::vector<Eigen::Vector3d>& support_force) {
-  const VertexSet& vertices = scene.vertices;
-  const EdgeSet& edges = scene.edges;
-  return allFinite(vertices.position) && allFinite(vertices.velocity) && allFinite(support_force) &&
-         allFinite(edges.rest_length) && allFinite(edges.strain_limit) &&
-         allFinite(edges.tension) && allFinite(edges.spring_tension) && allFinite(edges.stress) &&
-         allFinite(edges.strain) && allFinite(edges.plastic_strain) && allFinite(edges.strain_rate);
+/// Marks in `bad` the yarn (`yarn_of`, per element) of each non-finite element of `values`
+/// (doubles or Vector3d, three packed doubles); screens the whole array at once first.
+template <typename Value>
+void markNonFinite(const std::vector<Value>& values, const std::vector<std::uint32_t>& yarn_of,
+                   std::vector<std::uint8_t>& bad) {
+  static_assert(sizeof(Value) % sizeof(double) == 0);
+  if (values.empty() || allFinite(reinterpret_cast<const double*>(values.data()),
+                                  values.size() * (sizeof(Value) / sizeof(double)))) {
+    return;
+  }
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (!allFinite(values[i])) bad[yarn_of[i]] = 1;
+  }
 }
 
 }  // namespace
 
 std::vector<std::uint32_t> nonFiniteYarns(const Scene& scene,
                                           const std::vector<Eigen::Vector3d>& support_force) {
-  if (sceneIsFinite(scene, support_force)) return {};
   std::vector<std::uint8_t> bad(scene.yarns.size(), 0);
-  bool any = false;
   const VertexSet& vertices = scene.vertices;
-  for (std::size_t v = 0; v < vertices.size(); ++v) {
-    if (!vertices.position[v].allFinite() || !vertices.velocity[v].allFinite() ||
-        !support_force[v].allFinite()) {
-      bad[vertices.yarn[v]] = 1;
-      any = true;
-    }
-  }
   const EdgeSet& edges = scene.edges;
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    if (!edgeIsFinite(edges, e)) {
-      bad[edges.yarn[e]] = 1;
-      any = true;
-    }
+  markNonFinite(vertices.position, vertices.yarn, bad);
+  markNonFinite(vertices.velocity, vertices.yarn, bad);
+  markNonFinite(support_force, vertices.yarn, bad);
+  for (const std::vector<double>* values :
+       {&edges.rest_length, &edges.strain_limit, &edges.tension, &edges.spring_tension,
+        &edges.stress, &edges.strain, &edges.plastic_strain, &edges.strain_rate}) {
+    markNonFinite(*values, edges.yarn, bad);
   }
   std::vector<std::uint32_t> yarns;
-  if (!any) return yarns;
+  if (std::find(bad.begin(), bad.end(), 1) == bad.end()) return yarns;
   // A fabric is restored whole: both of its groups (its vertices belong to the warp group).
   for (const Fabric& fabric : scene.fabrics) {
     if (bad[fabric.warp_group] || bad[fabric.weft_group]) {

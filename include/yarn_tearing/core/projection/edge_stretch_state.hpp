@@ -87,9 +87,9 @@ class EdgeStretchState {
   std::vector<std::uint32_t> begin_;
   std::vector<std::uint32_t> end_;  ///< see begin_
   /// Edge e's pieces are still to be built: it is on its first, elastic piece (B = L, S = s in
-  /// base_length_ and shift_), and its flow starts at flow_start_[e].
+  /// base_length_ and shift_), and its flow starts at the multiplier
+  /// limits_->flow_start[e] dt^2.
   std::vector<std::uint8_t> pending_;
-  std::vector<double> flow_start_;  ///< a pending edge's multiplier where it starts to flow [kg m]
   std::vector<std::uint32_t> piece_;  ///< each edge's current piece (into pieces_), if built
   std::vector<double> shift_;         ///< S [1/kg]
   std::vector<double> base_length_;   ///< B [m]
