@@ -112,26 +112,32 @@ bool PatternCachedLdlt::analyze(const std::vector<Eigen::Triplet<double>>& entri
   return placeEntries(entries);
 }
 
-PatternCachedLdlt::NonzeroFit PatternCachedLdlt::nonzerosFitAnalysed() const {
-  const Analysis& a = *kept_.front();
+PatternCachedLdlt::NonzeroFit PatternCachedLdlt::copyNonzeros() {
+  Analysis& a = *kept_.front();
   if (a.nonzero_slot.size() != static_cast<std::size_t>(a.upper.nonZeros()) ||
       a.nonzero.rows() != a.upper.rows()) {
     return NonzeroFit::kNew;
   }
   const double* values = a.upper.valuePtr();
+  const int* slot = a.nonzero_slot.data();
+  double* kept = a.nonzero.valuePtr();
+  double left_out = 0.0;  // where a value left out of the pattern goes
   Eigen::Index zeros = 0;
-  bool outside = false;
+  int outside = 0;
+  // Without branches: which values are zero, and where, follows the scene, not a pattern the
+  // branch predictor learns.
   for (std::size_t k = 0; k < a.nonzero_slot.size(); ++k) {
-    if (a.nonzero_slot[k] < 0) {
-      outside = outside || values[k] != 0.0;
-    } else if (values[k] == 0.0) {
-      ++zeros;
-    }
+    const double value = values[k];
+    const bool within = slot[k] >= 0;
+    const bool zero = value == 0.0;
+    *(within ? kept + slot[k] : &left_out) = value;
+    zeros += static_cast<Eigen::Index>(within & zero);
+    outside |= static_cast<int>(!within & !zero);
   }
   if (static_cast<double>(zeros) > kMostZeroShare * static_cast<double>(a.nonzero.nonZeros())) {
     return NonzeroFit::kNew;
   }
-  return outside ? NonzeroFit::kGrow : NonzeroFit::kFits;
+  return outside != 0 ? NonzeroFit::kGrow : NonzeroFit::kFits;
 }
 
 bool PatternCachedLdlt::analyzeNonzeros(bool grow) {
@@ -172,12 +178,10 @@ bool PatternCachedLdlt::factorizeValues() {
   Analysis& a = *kept_.front();
   a.ldlt.setThreads(threads_);
   if (!leave_out_zeros_) return a.ldlt.factorize(a.upper);
-  const NonzeroFit fit = nonzerosFitAnalysed();
-  if (fit != NonzeroFit::kFits && !analyzeNonzeros(fit == NonzeroFit::kGrow)) return false;
-  const double* values = a.upper.valuePtr();
-  double* kept = a.nonzero.valuePtr();
-  for (std::size_t k = 0; k < a.nonzero_slot.size(); ++k) {
-    if (a.nonzero_slot[k] >= 0) kept[a.nonzero_slot[k]] = values[k];
+  const NonzeroFit fit = copyNonzeros();
+  if (fit != NonzeroFit::kFits) {
+    if (!analyzeNonzeros(fit == NonzeroFit::kGrow)) return false;
+    copyNonzeros();  // into the pattern just analysed
   }
   return a.ldlt.factorize(a.nonzero);
 }

@@ -151,7 +151,9 @@ class PatternCachedLdlt {
     kGrow,  ///< a nonzero value outside it, the share of zeros within bounds
     kNew,   ///< more zeros than kMostZeroShare, or no analysis of this pattern
   };
-  NonzeroFit nonzerosFitAnalysed() const;
+  /// Copies the front analysis's upper values into its nonzero pattern's values (those within
+  /// it) and says how they fit it; copies nothing for kNew of a pattern not analysed.
+  NonzeroFit copyNonzeros();
   /// Builds the front analysis's nonzero pattern from its upper values and diagonal, with
   /// `grow` also from the entries it held, and analyses it.
   bool analyzeNonzeros(bool grow);
