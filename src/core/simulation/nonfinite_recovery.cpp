@@ -1,6 +1,5 @@
 #include "yarn_tearing/core/simulation/nonfinite_recovery.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace yarn_tearing {
@@ -16,16 +15,18 @@ bool allFinite(const double* values, std::size_t count) {
 bool allFinite(double value) { return std::isfinite(value); }
 bool allFinite(const Eigen::Vector3d& value) { return value.allFinite(); }
 
-/// Marks in `bad` the yarn (`yarn_of`, per element) of each non-finite element of `values`
-/// (doubles or Vector3d, three packed doubles); screens the whole array at once first.
+/// Marks in `bad` (one flag per yarn of `yarn_count`, left empty until a value is found) the
+/// yarn (`yarn_of`, per element) of each non-finite element of `values` (doubles or Vector3d,
+/// three packed doubles); screens the whole array at once first.
 template <typename Value>
 void markNonFinite(const std::vector<Value>& values, const std::vector<std::uint32_t>& yarn_of,
-                   std::vector<std::uint8_t>& bad) {
+                   std::size_t yarn_count, std::vector<std::uint8_t>& bad) {
   static_assert(sizeof(Value) % sizeof(double) == 0);
   if (values.empty() || allFinite(reinterpret_cast<const double*>(values.data()),
                                   values.size() * (sizeof(Value) / sizeof(double)))) {
     return;
   }
+  bad.resize(yarn_count, 0);
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (!allFinite(values[i])) bad[yarn_of[i]] = 1;
   }
@@ -35,19 +36,20 @@ void markNonFinite(const std::vector<Value>& values, const std::vector<std::uint
 
 std::vector<std::uint32_t> nonFiniteYarns(const Scene& scene,
                                           const std::vector<Eigen::Vector3d>& support_force) {
-  std::vector<std::uint8_t> bad(scene.yarns.size(), 0);
+  std::vector<std::uint8_t> bad;  // per yarn, allocated at the first non-finite value
+  const std::size_t yarn_count = scene.yarns.size();
   const VertexSet& vertices = scene.vertices;
   const EdgeSet& edges = scene.edges;
-  markNonFinite(vertices.position, vertices.yarn, bad);
-  markNonFinite(vertices.velocity, vertices.yarn, bad);
-  markNonFinite(support_force, vertices.yarn, bad);
+  markNonFinite(vertices.position, vertices.yarn, yarn_count, bad);
+  markNonFinite(vertices.velocity, vertices.yarn, yarn_count, bad);
+  markNonFinite(support_force, vertices.yarn, yarn_count, bad);
   for (const std::vector<double>* values :
        {&edges.rest_length, &edges.strain_limit, &edges.tension, &edges.spring_tension,
         &edges.stress, &edges.strain, &edges.plastic_strain, &edges.strain_rate}) {
-    markNonFinite(*values, edges.yarn, bad);
+    markNonFinite(*values, edges.yarn, yarn_count, bad);
   }
   std::vector<std::uint32_t> yarns;
-  if (std::find(bad.begin(), bad.end(), 1) == bad.end()) return yarns;
+  if (bad.empty()) return yarns;
   // A fabric is restored whole: both of its groups (its vertices belong to the warp group).
   for (const Fabric& fabric : scene.fabrics) {
     if (bad[fabric.warp_group] || bad[fabric.weft_group]) {
