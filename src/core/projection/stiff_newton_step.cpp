@@ -39,6 +39,7 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
     }
   }
   last_factorization_.valid = false;
+  last_solve_reused_ = false;
   const auto assemble = [&]() {
     triplets_.clear();
     if (dense_band_) dense_band_factorization_.begin(rows, chainBandwidth(edges));
@@ -167,16 +168,31 @@ bool StiffNewtonStep::solveWithLastFactor(int rows, const std::vector<Eigen::Vec
   const bool assembled = addEdgeRows(edges, stretch_state, position, multiplier);
   rhs_only_ = false;
   if (!assembled) return false;
+  // A projection's first Newton step after a solve that the last factors took too (a scene that
+  // changes slowly) starts its multipliers where the linearization's are, the last step's: the
+  // vertex moves, a small difference of the large inertial and constraint terms, are then not
+  // computed from the factors' error in those terms. Later Newton steps (a step that did not
+  // converge in one: the scene jerks) and others start from zero, whose residual is the
+  // right-hand side.
+  const bool warm = last_solve_reused_ && newton_steps_ == 1;
   solution_.setZero(rows);
+  if (warm) {
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      if (edge_row_[e] >= 0) solution_[edge_row_[e]] = multiplier[e];
+    }
+  }
   double last_change = 0.0;  // the last pass's correction [mixed units]
   for (int pass = 0; pass < kReusePasses; ++pass) {
-    // From a zero solution the residual is the right-hand side.
-    if (pass > 0) exactResidual(edges, position, inverse_mass, multiplier, stretch_state);
-    if (!solveAssembled(pass > 0 ? residual_ : rhs_, correction_)) return false;
+    const bool from_zero = pass == 0 && !warm;
+    if (!from_zero) exactResidual(edges, position, inverse_mass, multiplier, stretch_state);
+    if (!solveAssembled(from_zero ? rhs_ : residual_, correction_)) return false;
     solution_ += correction_;
     const double change = correction_.lpNorm<Eigen::Infinity>();
     const double goal = kReuseTolerance * solution_.lpNorm<Eigen::Infinity>();
-    if (change <= goal) return solution_.allFinite();
+    if (change <= goal) {
+      last_solve_reused_ = solution_.allFinite();
+      return last_solve_reused_;
+    }
     // A correction that does not shrink: the factors are too far off.
     if (pass > 0 && !(change < last_change)) return false;
     last_change = change;

@@ -200,9 +200,11 @@ class StiffNewtonStep {
   /// the general path factorized (LastFactorization), so that solveWithLastFactor() may use it.
   bool lastFactorFits(const ContactSet* contacts) const;
   /// Solves this solve's system by iterative refinement on the exact system (exactResidual()),
-  /// each pass solved with the last factorization: only the right-hand side is assembled. False
-  /// when kReusePasses do not bring the correction below kReuseTolerance of the solution (the
-  /// caller then assembles and factorizes).
+  /// each pass solved with the last factorization: only the right-hand side is assembled. A
+  /// projection's first Newton step starts the passes from the linearization's multipliers after
+  /// a solve that took the last factors too (last_solve_reused_), others from zero. False when
+  /// kReusePasses do not bring the correction below kReuseTolerance of the solution (the caller
+  /// then assembles and factorizes).
   bool solveWithLastFactor(int rows, const std::vector<Eigen::Vector3d>& predicted,
                            const std::vector<double>& inverse_mass, const EdgeSet& edges,
                            const EdgeStretchState& stretch_state,
@@ -382,6 +384,9 @@ class StiffNewtonStep {
   /// not converge: doubled (plus one) at each such try, 0 after one that converged [-].
   int reuse_backoff_ = 0;
   int reuse_wait_ = 0;  ///< fitting solves still to leave out [-]
+  /// Whether the last solve took the last factors (solveWithLastFactor()) rather than a fresh
+  /// factorization (a scene that changes slowly; after a factorization it may be jerking) [-].
+  bool last_solve_reused_ = false;
   /// Most solves left out between two tries [-].
   static constexpr int kMostReuseWait = 63;
   /// Only the right-hand side is assembled (addEntry() and addBlock() add nothing).
