@@ -1,6 +1,6 @@
 // A fabric hit by a sudden point force far beyond a segment's breaking force (a robot yanking a
 // corner, a force message sent as a step): every step converges (a step whose projection does
-// not is taken again in recoil_substeps substeps), the outcome does not depend on the step the
+// not is taken again in substeps), the outcome does not depend on the step the
 // force arrives in, no break event reports more than the yarn's breaking force or strain, and no
 // vertex gains more momentum in a step than its loads can give it.
 #include <gtest/gtest.h>

@@ -27,6 +27,14 @@ namespace {
 /// (doc/method.md, "Recoil substeps").
 constexpr double kRecoilGrowth = 4.0;
 
+/// An unconverged step without obstacles is retried in substeps of this fraction of it, and a
+/// substep that does not converge in substeps of this fraction of itself, down to the fine one
+/// [-]: a step too long for its projection is mostly a little too long (doc/method.md,
+/// "Substeps for an unconverged step").
+constexpr double kRetryShrink = 4.0;
+/// After a retried substep converges, the next may be this many times as long [-].
+constexpr double kRetryGrowth = 2.0;
+
 /// Fine substeps [-] a fabric's release wave must take to unload the torn yarn's loaded run for
 /// the recoil substeps to keep any of its motion; within fewer (a trouser tear's tip in a 2 mm
 /// weave at Δt = 1e-3) they damp it as one step does, at several times its cost
@@ -212,6 +220,10 @@ void Simulator::advanceInSubsteps(bool recoil) {
   bool coarse_failed = false;
   double elapsed = 0.0;
   double last = 0.0;  // the last substep's length [s]
+  // A retry without a tear or obstacles: substeps shrinking while they do not converge, growing
+  // while they do (with obstacles, whose friction states an undone substep forgets, fine ones).
+  const bool retry_ladder = !recoil && obstacles_.empty();
+  double retry = time_step / kRetryShrink;  // the next retried substep's length [s]
   int count = 0;
   while (elapsed < time_step - slack) {
     const double remaining = time_step - elapsed;
@@ -219,16 +231,22 @@ void Simulator::advanceInSubsteps(bool recoil) {
     // geometrically to the step's end; one that does not converge is undone, and the rest of
     // the step is taken in fine substeps.
     const bool unloaded = time_ >= work_.tearing.unloadingEnd() - slack;
-    const bool coarse = recoil && unloaded && !coarse_failed;
-    double h = coarse ? std::max(fine, kRecoilGrowth * last) : fine;
+    const bool coarse = (recoil || retry_ladder) && unloaded && !coarse_failed;
+    double h = fine;
+    if (coarse) h = std::max(fine, recoil ? kRecoilGrowth * last : retry);
     if (remaining < h + 0.5 * h) h = remaining;
     setSubstepTargets((elapsed + h) / time_step);
     parameters_.time_step = h;
     work_.projection.forgetCorrection();
     if (!advance(coarse && h > fine + slack)) {
-      coarse_failed = true;
+      if (retry_ladder) {
+        retry = h / kRetryShrink;
+      } else {
+        coarse_failed = true;
+      }
       continue;
     }
+    retry = kRetryGrowth * h;
     last = h;
     elapsed += h;
     time_ = start_time + elapsed;

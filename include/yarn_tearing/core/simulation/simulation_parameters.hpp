@@ -64,7 +64,8 @@ struct SimulationParameters {
   /// runs through the pieces as a wave at sqrt(E / rho) (~2 km/s), far faster than a step
   /// resolves, so the step after a tear is taken in substeps of dt / recoil_substeps until the
   /// wave has crossed the torn pieces, the rest of it in one; a step whose projection does not
-  /// converge is taken again in recoil_substeps equal substeps. A fabric's tear whose release
+  /// converge is taken again in substeps no finer than dt / recoil_substeps (Simulator::step(),
+  /// doc/method.md "Substeps for an unconverged step"). A fabric's tear whose release
   /// unloads the torn yarn's loaded run within two such substeps (a tear tip the crossing yarns
   /// hold) is followed by a whole step (substep_every_recoil).
   int recoil_substeps = 96;

@@ -43,8 +43,8 @@ class Simulator {
   void step();
   /// True when the next step() resolves the recoil of a tear in substeps of Δt / recoil_substeps
   /// while the torn pieces unload (the rest of that step in one). A step whose projection does
-  /// not converge is taken again in recoil_substeps equal substeps (a sudden load far beyond
-  /// what one step can take back; lastHealth().substeps says so).
+  /// not converge is taken again in substeps (a sudden load far beyond what one step can take
+  /// back; advanceInSubsteps(); lastHealth().substeps says so).
   bool recoilPending() const { return recoil_pending_; }
 
   /// Replaces the parameters between steps (live tuning: air damping, regularization, breaking
@@ -107,11 +107,14 @@ class Simulator {
   bool advance(bool undo_if_unconverged);
   /// Puts the vertices back where the step started and forgets the solvers' warm starts.
   void undoPrediction();
-  /// One step of `time_step` in substeps of time_step / recoil_substeps, kinematic vertices moved
-  /// linearly to their targets; lastHealth() is the worst of the substeps'. With `recoil` (the
-  /// step after a tear) only while a torn piece is still unloading (Tearing::unloadingEnd());
-  /// the rest of the step is then taken in substeps growing in length, or in fine substeps again
-  /// if one of those does not converge (doc/method.md, "Recoil substeps").
+  /// One step of `time_step` in substeps (the fine ones time_step / recoil_substeps), kinematic
+  /// vertices moved linearly to their targets; lastHealth() is the worst of the substeps'. With
+  /// `recoil` (the step after a tear) only while a torn piece is still unloading
+  /// (Tearing::unloadingEnd()); the rest of the step is then taken in substeps growing in length,
+  /// or in fine substeps again if one of those does not converge (doc/method.md, "Recoil
+  /// substeps"). Without `recoil` (an unconverged step) and without obstacles, in substeps from a
+  /// quarter of the step, each that does not converge retried at a quarter of itself, each that
+  /// does followed by one up to twice as long (doc/method.md, "Substeps for an unconverged step").
   void advanceInSubsteps(bool recoil);
   /// The step after the tears of `torn` (global edge ids) with only their RecoilRegion taken
   /// through the release wave, the rest of the scene in one step with the region's boundary

@@ -29,8 +29,9 @@ struct StepHealth {
   std::vector<std::uint32_t> restored_yarns;
   /// Substeps the step was taken in [-]: 1; after a tear, the fine substeps of the unloading plus
   /// those growing to the step's end, or the explicit substeps of a local recoil's wave
-  /// (integrateRecoilWave()); recoil_substeps when the whole step's projection did not converge
-  /// (the other fields are then the worst substep's, breaks and restored_yarns their union).
+  /// (integrateRecoilWave()); the retry's substeps when the whole step's projection did not
+  /// converge (recoil_substeps of them with obstacles; the other fields are then the worst
+  /// substep's, breaks and restored_yarns their union).
   int substeps = 1;
   /// Vertices those substeps moved [-]: the scene's, or a local recoil's region
   /// (SimulationParameters::local_recoil); 0 for a step taken in one.
