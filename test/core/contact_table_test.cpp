@@ -98,6 +98,104 @@ TEST(YarnOnFrictionlessTable, PulledAlongMovesAsAFreeBody) {
   EXPECT_LE(deepestPenetration(sim, sim.obstacles()[0]), 1e-4);
 }
 
+// A frictionless table raised at 1 cm/s into the lowest vertex of a hanging yarn (2 or 25
+// vertices) lifts it: from 50 ms after it arrives (its edge's elastic stretch under its weight,
+// 0.13 um with 2 vertices, lets it go in a hop) that vertex rides on the table, at its height plus
+// the yarn's radius and at its speed, and no vertex moves faster than 2 x the table (the vertex
+// arriving is the only point on the table: the projection's fast iterations take it as a row).
+class RaisedTable : public ::testing::TestWithParam<std::tuple<double, int>> {};
+
+TEST_P(RaisedTable, LiftsAHangingYarnsEndAtItsSpeed) {
+  const auto [dt, vertices] = GetParam();
+  YarnSpec spec = hangingYarn();
+  spec.num_vertices = vertices;
+  SimulationParameters p;
+  p.time_step = dt;
+  Simulator sim(p, {spec});
+  const std::uint32_t end = static_cast<std::uint32_t>(vertices - 1);
+  const std::vector<Eigen::Vector3d>& x = sim.scene().vertices.position;
+  const std::vector<Eigen::Vector3d>& v = sim.scene().vertices.velocity;
+  const double speed = 0.01;                             // [m/s]
+  const double start = x[end].z() - spec.radius - 1e-3;  // 1 mm below the end [m]
+  sim.setObstacles({obstacleAt(ObstacleShape::kPlane, Eigen::Vector3d(0.0, 0.0, start), 0.0)});
+  const int steps = static_cast<int>(std::lround(0.2 / dt));     // lifted by 2 mm
+  const int settled = static_cast<int>(std::lround(0.15 / dt));  // 50 ms after it arrives
+  double fastest = 0.0;                                          // [m/s]
+  for (int i = 1; i <= steps; ++i) {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.translation().z() = start + speed * i * dt;
+    sim.setObstaclePose(0, pose);
+    sim.step();
+    ASSERT_TRUE(sim.lastHealth().projection_converged) << "step " << i;
+    for (const Eigen::Vector3d& velocity : v) fastest = std::max(fastest, velocity.norm());
+    if (i < settled) continue;
+    EXPECT_NEAR(x[end].z(), pose.translation().z() + spec.radius, 1e-6 * spec.radius)
+        << "step " << i;
+    EXPECT_NEAR(v[end].z(), speed, 1e-6 * speed) << "step " << i;
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_LE(fastest, 2.0 * speed);
+}
+
+INSTANTIATE_TEST_SUITE_P(Steps, RaisedTable,
+                         ::testing::Combine(::testing::Values(1e-4, 1e-3, 1e-2),
+                                            ::testing::Values(2, 25)),
+                         [](const ::testing::TestParamInfo<RaisedTable::ParamType>& info) {
+                           return stepName(std::get<0>(info.param)) + "_" +
+                                  std::to_string(std::get<1>(info.param)) + "vertices";
+                         });
+
+// A hanging yarn whose last edge is weak (a quarter of the yarn's strength), its end pulled down by
+// twice that edge's breaking force towards a frictionless table 5 mm below: the edge tears, and the
+// end, a lone vertex now, flies onto the table and stays there, at the table plus the yarn's
+// radius, the table carrying the pull and the vertex's weight; on its way it is never faster than
+// the pull and gravity can throw it from the tear plus the yarn's snap-back speed (2, 3 and 25
+// vertices).
+class TornEndOnTable : public ::testing::TestWithParam<std::tuple<double, int>> {};
+
+TEST_P(TornEndOnTable, LandsAndRestsOnIt) {
+  const auto [dt, vertices] = GetParam();
+  YarnSpec spec = hangingYarn();
+  spec.num_vertices = vertices;
+  spec.length = 0.0125 * (vertices - 1);
+  Scene scene = buildScene({spec});
+  const std::uint32_t end = static_cast<std::uint32_t>(vertices - 1);
+  scene.edges.strength_factor.back() = 0.25;
+  SimulationParameters p;
+  p.time_step = dt;
+  Simulator sim(p, std::move(scene));
+  const VertexSet& v = sim.scene().vertices;
+  const double table = v.position[end].z() - 0.005;  // [m]
+  sim.setObstacles({obstacleAt(ObstacleShape::kPlane, Eigen::Vector3d(0.0, 0.0, table), 0.0)});
+  const double pull =
+      2.0 * 0.5 * spec.material.curve.breakingStress() * kPi * spec.radius * spec.radius;  // [N]
+  sim.setAppliedForce(end, Eigen::Vector3d(0.0, 0.0, -pull));
+  const double mass = v.mass[end];
+  const double acceleration = pull / mass + kGravity;  // [m/s^2]
+  const double fastest = std::sqrt(2.0 * acceleration * (0.005 + spec.length)) +
+                         spec.material.snapBackSpeed();  // [m/s]
+  std::size_t tears = 0;
+  for (int i = 0; i < static_cast<int>(std::lround(0.05 / dt)); ++i) {
+    sim.step();
+    ASSERT_TRUE(sim.lastHealth().projection_converged) << "step " << i;
+    ASSERT_LE(v.velocity[end].norm(), fastest) << "step " << i;
+    tears += sim.takeTearEvents().size();
+  }
+  EXPECT_EQ(tears, 1u);
+  EXPECT_NEAR(v.position[end].z(), table + spec.radius, 1e-6 * spec.radius);
+  EXPECT_LE(v.velocity[end].norm(), 1e-6);
+  const double carried = pull + mass * kGravity;  // [N]
+  EXPECT_NEAR(-sim.contactWrench(0).force.z(), carried, 1e-6 * carried);
+}
+
+INSTANTIATE_TEST_SUITE_P(Steps, TornEndOnTable,
+                         ::testing::Combine(::testing::Values(1e-4, 1e-3, 1e-2),
+                                            ::testing::Values(2, 3, 25)),
+                         [](const ::testing::TestParamInfo<TornEndOnTable::ParamType>& info) {
+                           return stepName(std::get<0>(info.param)) + "_" +
+                                  std::to_string(std::get<1>(info.param)) + "vertices";
+                         });
+
 // setObstacles keeps the contacts' friction states for the same solids at the same poses.
 TEST(ObstacleGeometry, SameSolidAtTheSamePoseWhateverItsFrictionOrName) {
   const Obstacle post = obstacleAt(ObstacleShape::kCapsule, Eigen::Vector3d::Zero(), 0.0);

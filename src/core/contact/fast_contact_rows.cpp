@@ -97,9 +97,9 @@ double FastContactRows::coupling(const Row& i, const Row& j,
                                  const std::vector<double>& inverse_mass) const {
   double k = 0.0;
   const double d = i.direction.dot(j.direction);
-  for (const std::uint32_t v : {i.a, i.b}) {
-    if (v == i.b && i.b == i.a) continue;
-    const double wi = v == i.a ? i.weight_a : i.weight_b;
+  for (int end = 0; end < i.ends(); ++end) {
+    const std::uint32_t v = end == 0 ? i.a : i.b;
+    const double wi = end == 0 ? i.weight_a : i.weight_b;
     double wj = 0.0;
     if (v == j.a) wj += j.weight_a;
     if (v == j.b && j.b != j.a) wj += j.weight_b;
@@ -130,9 +130,9 @@ void FastContactRows::solve(const EdgeSet& edges, EdgeGramSolver& gram, const Gr
     const Row& r = row_[active_rows_[p]];
     std::vector<double>& column = column_[p];
     column.assign(edges.size(), 0.0);
-    for (const std::uint32_t v : {r.a, r.b}) {
-      if (v == r.b && r.b == r.a) continue;
-      const double weight = v == r.a ? r.weight_a : r.weight_b;
+    for (int end = 0; end < r.ends(); ++end) {
+      const std::uint32_t v = end == 0 ? r.a : r.b;
+      const double weight = end == 0 ? r.weight_a : r.weight_b;
       const Eigen::Vector3d gradient = -(inverse_mass[v] * weight) * r.direction;
       const EdgeIncidence& incidence = gram.incidence();
       for (const std::uint32_t* it = incidence.begin(v); it != incidence.end(v); ++it) {

@@ -81,6 +81,8 @@ class FastContactRows {
     double weight_a = 1.0;  ///< 1 - t
     double weight_b = 0.0;  ///< t (0 for a vertex contact)
     bool active = false;    ///< in the equality set
+    /// The vertices the row moves [-]: 1 for a vertex contact (b = a), else 2.
+    int ends() const { return b == a ? 1 : 2; }
   };
   /// K_ij over the vertices the two rows share [m/kg].
   double coupling(const Row& i, const Row& j, const std::vector<double>& inverse_mass) const;
