@@ -35,12 +35,12 @@ class SparseLdlt {
   bool supernodal() const { return supernodal_; }
 
   /// Factor cost (multiply-adds, the sum over the columns of L of the squared nonzeros below
-  /// the diagonal) from which the simplicial kernel hands over to the supernodal one [-]:
-  /// between the 32 x 32 and the 64 x 64 trouser tear's Newton systems, where it is slower and
-  /// faster per factorization.
-  static constexpr double kSupernodalCost = 4e6;
+  /// the diagonal) from which the simplicial kernel hands over to the supernodal one [-]: below
+  /// the 32 x 32 trouser tear's Newton systems (1.5e6), whose factorizations the supernodal kernel
+  /// takes in about 0.7 x the time, above the 64 x 64 hanging fabric's edge Gram matrix (9e5).
+  static constexpr double kSupernodalCost = 1.4e6;
   /// Factor cost below which the supernodal kernel hands back to the simplicial one [-].
-  static constexpr double kSimplicialCost = 2e6;
+  static constexpr double kSimplicialCost = 1e6;
 
  private:
   /// Eigen's simplicial LDL^T, which tells its analysis's cost from the column counts its
