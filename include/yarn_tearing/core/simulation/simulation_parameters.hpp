@@ -92,7 +92,7 @@ struct SimulationParameters {
   /// factorization of the same layout (StiffNewtonStep; for comparing the two).
   bool force_fresh_factorizations = false;
   /// Threads a large sparse factorization may use [-] (>= 1; it uses at most 2): the
-  /// supernodal kernel's factorizations (fabrics of some 64 x 64 vertices up, while taut) then
+  /// supernodal kernel's factorizations (fabrics of some 32 x 32 vertices up, while taut) then
   /// eliminate disjoint parts of the system on a second thread. Results do not depend on it.
   int threads = 1;
 
