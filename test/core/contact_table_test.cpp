@@ -1,6 +1,10 @@
 // A yarn lying on a table (a plane): it does not sink, the table carries its weight, and with
-// friction it does not creep.
+// friction it does not creep. A table raised into a hanging yarn's end carries it at its speed, and
+// a torn end pulled onto one lands and rests there.
 #include <gtest/gtest.h>
+
+#include <string>
+#include <tuple>
 
 #include "contact_test_support.hpp"
 
@@ -98,6 +102,12 @@ TEST(YarnOnFrictionlessTable, PulledAlongMovesAsAFreeBody) {
   EXPECT_LE(deepestPenetration(sim, sim.obstacles()[0]), 1e-4);
 }
 
+/// "dt1em3_25vertices": a case of a time step [s] and a vertex count [-].
+std::string stepAndVerticesName(const ::testing::TestParamInfo<std::tuple<double, int>>& info) {
+  return stepName(std::get<0>(info.param)) + "_" + std::to_string(std::get<1>(info.param)) +
+         "vertices";
+}
+
 // A frictionless table raised at 1 cm/s into the lowest vertex of a hanging yarn (2 or 25
 // vertices) lifts it: from 50 ms after it arrives (its edge's elastic stretch under its weight,
 // 0.13 um with 2 vertices, lets it go in a hop) that vertex rides on the table, at its height plus
@@ -139,10 +149,7 @@ TEST_P(RaisedTable, LiftsAHangingYarnsEndAtItsSpeed) {
 INSTANTIATE_TEST_SUITE_P(Steps, RaisedTable,
                          ::testing::Combine(::testing::Values(1e-4, 1e-3, 1e-2),
                                             ::testing::Values(2, 25)),
-                         [](const ::testing::TestParamInfo<RaisedTable::ParamType>& info) {
-                           return stepName(std::get<0>(info.param)) + "_" +
-                                  std::to_string(std::get<1>(info.param)) + "vertices";
-                         });
+                         stepAndVerticesName);
 
 // A hanging yarn whose last edge is weak (a quarter of the yarn's strength), its end pulled down by
 // twice that edge's breaking force towards a frictionless table 5 mm below: the edge tears, and the
@@ -192,10 +199,7 @@ TEST_P(TornEndOnTable, LandsAndRestsOnIt) {
 INSTANTIATE_TEST_SUITE_P(Steps, TornEndOnTable,
                          ::testing::Combine(::testing::Values(1e-4, 1e-3, 1e-2),
                                             ::testing::Values(2, 3, 25)),
-                         [](const ::testing::TestParamInfo<TornEndOnTable::ParamType>& info) {
-                           return stepName(std::get<0>(info.param)) + "_" +
-                                  std::to_string(std::get<1>(info.param)) + "vertices";
-                         });
+                         stepAndVerticesName);
 
 // setObstacles keeps the contacts' friction states for the same solids at the same poses.
 TEST(ObstacleGeometry, SameSolidAtTheSamePoseWhateverItsFrictionOrName) {
