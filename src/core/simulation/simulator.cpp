@@ -219,35 +219,34 @@ void Simulator::advanceInSubsteps(bool recoil) {
   bool tore = false;
   bool coarse_failed = false;
   double elapsed = 0.0;
-  double last = 0.0;  // the last substep's length [s]
   // A retry without a tear or obstacles: substeps shrinking while they do not converge, growing
   // while they do (with obstacles, whose friction states an undone substep forgets, fine ones).
   const bool retry_ladder = !recoil && obstacles_.empty();
-  double retry = time_step / kRetryShrink;  // the next retried substep's length [s]
+  const double growth = recoil ? kRecoilGrowth : kRetryGrowth;
+  // The next coarse substep's length [s]: after a tear, from the fine one up.
+  double next = recoil ? 0.0 : time_step / kRetryShrink;
   int count = 0;
   while (elapsed < time_step - slack) {
     const double remaining = time_step - elapsed;
     // Once every torn piece has unloaded (the elastic wave has crossed it), substeps growing
-    // geometrically to the step's end; one that does not converge is undone, and the rest of
-    // the step is taken in fine substeps.
+    // geometrically to the step's end. One that does not converge is undone; then a retry's
+    // ladder takes a quarter of it, a tear's recoil the rest of the step in fine substeps.
     const bool unloaded = time_ >= work_.tearing.unloadingEnd() - slack;
     const bool coarse = (recoil || retry_ladder) && unloaded && !coarse_failed;
-    double h = fine;
-    if (coarse) h = std::max(fine, recoil ? kRecoilGrowth * last : retry);
+    double h = coarse ? std::max(fine, next) : fine;
     if (remaining < h + 0.5 * h) h = remaining;
     setSubstepTargets((elapsed + h) / time_step);
     parameters_.time_step = h;
     work_.projection.forgetCorrection();
     if (!advance(coarse && h > fine + slack)) {
       if (retry_ladder) {
-        retry = h / kRetryShrink;
+        next = h / kRetryShrink;
       } else {
         coarse_failed = true;
       }
       continue;
     }
-    retry = kRetryGrowth * h;
-    last = h;
+    next = growth * h;
     elapsed += h;
     time_ = start_time + elapsed;
     ++count;
