@@ -1,12 +1,16 @@
 // PatternCachedLdlt leaving stored zeros out of the factorization (leaveOutZeros()): the same
 // solution as with them, a factor without their fill, and a new analysis only when a nonzero
 // falls outside the analysed one; entries added straight into the analysed pattern factorize as
-// the same entries listed; with keepAnalyses(), a pattern that returns is not analysed again.
+// the same entries listed; with keepAnalyses(), a pattern that returns is not analysed again;
+// with leaveOutIdleRows(), a pattern listed once holds while the rows in use change, zeros
+// between rows in use are kept, and rows in use that settle get an ordering of their own.
 #include "yarn_tearing/core/linalg/pattern_cached_ldlt.hpp"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cstdint>
+#include <vector>
 
 namespace yarn_tearing::test {
 namespace {
@@ -154,6 +158,95 @@ TEST(PatternCachedLdlt, KeptAnalysesAreTakenUpAgainAndEachSolvesItsOwnSystem) {
   }
   EXPECT_EQ(one.analyses(), 6);
   EXPECT_EQ(two.analyses(), 2);
+}
+
+/// An edge Gram matrix listed with every entry it may use: `n` rows in a ring, each coupled to
+/// the next by -0.3 where both are in use (0 where either is idle) and to the one `n / 2` away
+/// by 0.1; the coupling of rows 1 and 2 is 0 even while both are in use (a warp and a weft edge
+/// at right angles). Idle rows keep their diagonal.
+std::vector<Eigen::Triplet<double>> ringGram(int n, const std::vector<std::uint8_t>& idle) {
+  std::vector<Eigen::Triplet<double>> entries;
+  const auto couple = [&](int a, int b, double value) {
+    const double in_use = idle[a] || idle[b] ? 0.0 : value;
+    entries.emplace_back(a, b, in_use);
+    entries.emplace_back(b, a, in_use);
+  };
+  for (int e = 0; e < n; ++e) {
+    entries.emplace_back(e, e, 1.0 + 0.01 * e);
+    couple(e, (e + 1) % n, e == 1 ? 0.0 : -0.3);
+    if (e < n / 2) couple(e, e + n / 2, 0.1);
+  }
+  return entries;
+}
+
+/// Factorizes `entries` straight into the analysed pattern where it may, else as a list.
+bool factorizeGram(PatternCachedLdlt& ldlt, const std::vector<Eigen::Triplet<double>>& entries,
+                   int size) {
+  if (!ldlt.beginDirect(size)) return ldlt.factorize(entries, size);
+  for (const Eigen::Triplet<double>& t : entries) {
+    if (!ldlt.addDirect(t.row(), t.col(), t.value())) return false;
+  }
+  return ldlt.endDirect() && ldlt.factorizeDirect();
+}
+
+TEST(PatternCachedLdlt, IdleRowsLeaveTheirEntriesOutWhileTheListedPatternHolds) {
+  constexpr int kRows = 40;
+  std::vector<std::uint8_t> first(kRows, 0);
+  std::vector<std::uint8_t> second(kRows, 0);
+  for (int e = 0; e < kRows; e += 5) first[e] = 1;
+  for (int e = 2; e < kRows; e += 7) second[e] = 1;
+  std::vector<std::uint8_t> idle = first;
+  PatternCachedLdlt ldlt;
+  ldlt.leaveOutIdleRows(&idle);
+  const Eigen::VectorXd rhs = Eigen::VectorXd::LinSpaced(kRows, -1.0, 2.0);
+  ASSERT_TRUE(factorizeGram(ldlt, ringGram(kRows, idle), kRows));
+  // The idle rows' entries are left out and the zero coupling of rows 1 and 2 is kept: the
+  // factor is that of the rows in use listed alone, with a nonzero there.
+  std::vector<Eigen::Triplet<double>> in_use;
+  for (const Eigen::Triplet<double>& t : ringGram(kRows, idle)) {
+    if (t.row() != t.col() && (idle[t.row()] || idle[t.col()])) continue;
+    const bool zero_pair = t.row() + t.col() == 3 && t.row() * t.col() == 2;
+    in_use.emplace_back(t.row(), t.col(), zero_pair ? -0.3 : t.value());
+  }
+  PatternCachedLdlt alone;
+  ASSERT_TRUE(alone.factorize(in_use, kRows));
+  EXPECT_EQ(ldlt.factorNonZeros(), alone.factorNonZeros());
+
+  // Two sets of rows in use, alternating: each solves its own system, with the one listed
+  // analysis (their fill differs by less than the growth that orders anew). The second's rows
+  // that the first leaves idle grow the analysed entries once; then both fit them.
+  for (int pass = 0; pass < 4; ++pass) {
+    for (const std::vector<std::uint8_t>* set : {&first, &second}) {
+      idle = *set;
+      const std::vector<Eigen::Triplet<double>> entries = ringGram(kRows, idle);
+      ASSERT_TRUE(factorizeGram(ldlt, entries, kRows));
+      const Eigen::VectorXd expected = denseSolve(entries, kRows, rhs);
+      EXPECT_LT((ldlt.solve(rhs) - expected).norm(), 1e-12 * expected.norm());
+    }
+  }
+  EXPECT_EQ(ldlt.analyses(), 1);
+  EXPECT_EQ(ldlt.zeroFreeAnalyses(), 2);
+}
+
+TEST(PatternCachedLdlt, IdleRowsThatSettleGetAnOrderingOfTheirOwn) {
+  constexpr int kRows = 40;
+  std::vector<std::uint8_t> idle(kRows, 0);
+  PatternCachedLdlt ldlt;
+  ldlt.leaveOutIdleRows(&idle);
+  ASSERT_TRUE(factorizeGram(ldlt, ringGram(kRows, idle), kRows));
+  ASSERT_EQ(ldlt.analyses(), 1);
+  // Every fourth row idle from now on: the ring falls apart into chains, first in the ring's
+  // ordering; once they have settled they are ordered anew (one more listed analysis), and the
+  // solutions stay those of their system throughout.
+  for (int e = 0; e < kRows; e += 4) idle[e] = 1;
+  const std::vector<Eigen::Triplet<double>> entries = ringGram(kRows, idle);
+  const Eigen::VectorXd rhs = Eigen::VectorXd::LinSpaced(kRows, 3.0, -1.0);
+  const Eigen::VectorXd expected = denseSolve(entries, kRows, rhs);
+  for (int k = 0; k < 40; ++k) {
+    ASSERT_TRUE(factorizeGram(ldlt, entries, kRows));
+    EXPECT_LT((ldlt.solve(rhs) - expected).norm(), 1e-12 * expected.norm());
+  }
+  EXPECT_EQ(ldlt.analyses(), 2);
 }
 
 }  // namespace

@@ -78,11 +78,21 @@ bool PatternCachedLdlt::analyze(const std::vector<Eigen::Triplet<double>>& entri
   Analysis& a = *kept_.front();
   a.signature = signature;
   a.nonzero_slot.clear();
+  a.nonzero_source.clear();
   if (ordered_) {
     // The ordering Eigen's SimplicialLDLT would choose: AMD on the symmetric matrix of the lower
     // triangle.
     Eigen::SparseMatrix<double> full(size, size);
-    full.setFromTriplets(entries.begin(), entries.end());
+    if (idle_rows_ != nullptr) {
+      std::vector<Eigen::Triplet<double>> kept;
+      kept.reserve(entries.size());
+      for (const Eigen::Triplet<double>& t : entries) {
+        if (!idleEntry(t.row(), t.col())) kept.push_back(t);
+      }
+      full.setFromTriplets(kept.begin(), kept.end());
+    } else {
+      full.setFromTriplets(entries.begin(), entries.end());
+    }
     const Eigen::SparseMatrix<double> symmetric = full.selfadjointView<Eigen::Lower>();
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
     Eigen::AMDOrdering<int>()(symmetric, inverse);
@@ -124,15 +134,42 @@ PatternCachedLdlt::NonzeroFit PatternCachedLdlt::copyNonzeros() {
   double left_out = 0.0;  // where a value left out of the pattern goes
   Eigen::Index zeros = 0;
   int outside = 0;
-  // Without branches: which values are zero, and where, follows the scene, not a pattern the
-  // branch predictor learns.
-  for (std::size_t k = 0; k < a.nonzero_slot.size(); ++k) {
-    const double value = values[k];
-    const bool within = slot[k] >= 0;
-    const bool zero = value == 0.0;
-    *(within ? kept + slot[k] : &left_out) = value;
-    zeros += static_cast<Eigen::Index>(within & zero);
-    outside |= static_cast<int>(!within & !zero);
+  if (idle_rows_ != nullptr && *idle_rows_ == last_idle_) {
+    // The rows in use as in the last factorization: its pattern fits.
+    const int* source = a.nonzero_source.data();
+    for (std::size_t i = 0; i < a.nonzero_source.size(); ++i) kept[i] = values[source[i]];
+    return NonzeroFit::kFits;
+  }
+  if (idle_rows_ != nullptr) {
+    // By the rows in use: an entry is kept where both its rows are (or on the diagonal).
+    last_idle_ = *idle_rows_;
+    ordered_for_rows_ = false;
+    settled_ = 0;
+    permuteIdleRows();
+    const int* outer = a.upper.outerIndexPtr();
+    const int* inner = a.upper.innerIndexPtr();
+    for (Eigen::Index j = 0; j < a.upper.outerSize(); ++j) {
+      const bool idle_column = permuted_idle_[static_cast<std::size_t>(j)] != 0;
+      for (int k = outer[j]; k < outer[j + 1]; ++k) {
+        const bool within = slot[k] >= 0;
+        const bool idle =
+            inner[k] != j && (idle_column || permuted_idle_[static_cast<std::size_t>(inner[k])]);
+        *(within ? kept + slot[k] : &left_out) = values[k];
+        zeros += static_cast<Eigen::Index>(within & idle);
+        outside |= static_cast<int>(!within & !idle);
+      }
+    }
+  } else {
+    // Without branches: which values are zero, and where, follows the scene, not a pattern the
+    // branch predictor learns.
+    for (std::size_t k = 0; k < a.nonzero_slot.size(); ++k) {
+      const double value = values[k];
+      const bool within = slot[k] >= 0;
+      const bool zero = value == 0.0;
+      *(within ? kept + slot[k] : &left_out) = value;
+      zeros += static_cast<Eigen::Index>(within & zero);
+      outside |= static_cast<int>(!within & !zero);
+    }
   }
   if (static_cast<double>(zeros) > kMostZeroShare * static_cast<double>(a.nonzero.nonZeros())) {
     return NonzeroFit::kNew;
@@ -151,11 +188,19 @@ bool PatternCachedLdlt::analyzeNonzeros(bool grow) {
   // Grown, the pattern keeps what it held: entries that come and go (a slack edge that turns
   // taut now and then) then stay in it instead of bringing an analysis each time they return.
   if (!grow) a.nonzero_slot.assign(static_cast<std::size_t>(a.upper.nonZeros()), -1);
+  if (idle_rows_ != nullptr) permuteIdleRows();
+  const auto in_use = [&](Eigen::Index j, int k) {
+    if (idle_rows_ == nullptr) return values[k] != 0.0 || inner[k] == j;
+    return inner[k] == j || (permuted_idle_[static_cast<std::size_t>(j)] == 0 &&
+                             permuted_idle_[static_cast<std::size_t>(inner[k])] == 0);
+  };
   int kept = 0;
+  a.nonzero_source.clear();
   for (Eigen::Index j = 0; j < size; ++j) {
     for (int k = outer[j]; k < outer[j + 1]; ++k) {
       const bool held = grow && a.nonzero_slot[k] >= 0;
-      a.nonzero_slot[k] = values[k] != 0.0 || inner[k] == j || held ? kept++ : -1;
+      a.nonzero_slot[k] = in_use(j, k) || held ? kept++ : -1;
+      if (a.nonzero_slot[k] >= 0) a.nonzero_source.push_back(k);
     }
   }
   // Columns of upper are sorted, so are the kept entries: the arrays are filled directly.
@@ -182,8 +227,31 @@ bool PatternCachedLdlt::factorizeValues() {
   if (fit != NonzeroFit::kFits) {
     if (!analyzeNonzeros(fit == NonzeroFit::kGrow)) return false;
     copyNonzeros();  // into the pattern just analysed
+    if (idle_rows_ != nullptr) watchRowsInUse();
+  } else if (idle_rows_ != nullptr && !ordered_for_rows_ && ++settled_ == kSettledFactorizations) {
+    reorder_next_ = true;  // rows in use that have settled get an ordering of their own
+    reorder_listed_ = true;
   }
   return a.ldlt.factorize(a.nonzero);
+}
+
+void PatternCachedLdlt::watchRowsInUse() {
+  // The rows in use change under one ordering: the first analysis after it sets the fill to
+  // compare with, later ones order anew (at the next factorize()) once it has grown.
+  watchFill(true);
+  ordered_for_rows_ = ordered_;
+  ordered_ = false;
+  reorder_listed_ = reorder_next_;
+  settled_ = 0;
+}
+
+void PatternCachedLdlt::permuteIdleRows() {
+  const Analysis& a = *kept_.front();
+  permuted_idle_.resize(static_cast<std::size_t>(a.new_index.size()));
+  for (Eigen::Index i = 0; i < a.new_index.size(); ++i) {
+    permuted_idle_[static_cast<std::size_t>(a.new_index[i])] =
+        (*idle_rows_)[static_cast<std::size_t>(i)];
+  }
 }
 
 void PatternCachedLdlt::watchFill(bool analysed) {
@@ -194,7 +262,8 @@ void PatternCachedLdlt::watchFill(bool analysed) {
       static_cast<double>(factorNonZeros()) / static_cast<double>(factorized.nonZeros());
   if (ordered_) {
     ordered_fill_ = fill;
-  } else if (fill > kMostFillGrowth * ordered_fill_) {
+  } else if (fill >
+             (idle_rows_ != nullptr ? kMostIdleFillGrowth : kMostFillGrowth) * ordered_fill_) {
     reorder_next_ = true;
   }
 }
@@ -206,7 +275,8 @@ bool PatternCachedLdlt::factorize(const std::vector<Eigen::Triplet<double>>& ent
   // With one analysis kept the sequence is compared with it directly, stopping at the first
   // difference; the signature screens several.
   const std::uint64_t signature = most_kept_ > 1 ? sequenceSignature(entries, size) : 0;
-  const bool analysed = !takeUpKept(entries, size, signature);
+  const bool analysed = reorder_listed_ || !takeUpKept(entries, size, signature);
+  reorder_listed_ = false;
   if (analysed && !analyze(entries, size, signature)) {
     kept_.erase(kept_.begin());  // no sequence to take up or add to directly
     return false;
@@ -240,7 +310,7 @@ bool PatternCachedLdlt::beginDirect(Eigen::Index size) {
   direct_values_ = nullptr;
   direct_count_ = 0;
   if (kept_.empty() || kept_.front()->new_index.size() != size ||
-      kept_.front()->entry_row.empty()) {
+      kept_.front()->entry_row.empty() || reorder_listed_) {
     return false;
   }
   cursor_ = 0;

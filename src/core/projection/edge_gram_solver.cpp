@@ -1,5 +1,7 @@
 #include "yarn_tearing/core/projection/edge_gram_solver.hpp"
 
+#include <algorithm>
+
 #include "yarn_tearing/core/projection/gram_operator.hpp"
 
 namespace yarn_tearing {
@@ -23,11 +25,25 @@ void EdgeGramSolver::setTopology(const EdgeSet& edges, std::size_t num_vertices)
   }
   incidence_.build(edges, num_vertices);
   chains_.build(edges, incidence_);
+  listCouplings(edges);
   diagonal_.resize(edges.size());
   included_.resize(edges.size());
   upper_.resize(edges.size());
   gram_diagonal_.resize(edges.size());
   last_solution_.clear();
+}
+
+void EdgeGramSolver::listCouplings(const EdgeSet& edges) {
+  couplings_.clear();
+  coupling_start_.assign(1, 0);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    for (std::uint32_t v : {edges.vertex_a[e], edges.vertex_b[e]}) {
+      for (const std::uint32_t* it = incidence_.begin(v); it != incidence_.end(v); ++it) {
+        if (*it != e) couplings_.push_back({*it, v, roleSign(edges, e, *it, v)});
+      }
+    }
+    coupling_start_.push_back(static_cast<std::uint32_t>(couplings_.size()));
+  }
 }
 
 void EdgeGramSolver::solve(const EdgeSet& edges, const GramSystem& system,
@@ -140,34 +156,51 @@ void EdgeGramSolver::solveGeneral(const EdgeSet& edges, const GramSystem& system
   const std::vector<double>& w = *system.vertex_weight;
   const std::vector<Eigen::Vector3d>& n = *system.direction;
   const std::size_t q = edges.size();
-  const auto list = [&](const auto& add) {
+  // Every pair of edges that meet at a free vertex is listed, the rows of edges not included
+  // idle: the pattern holds while the included edges change (PatternCachedLdlt::leaveOutIdleRows).
+  // An idle row's entries are zeros: `skip(e, count, list_zeros)` passes over its `count`.
+  const auto list = [&](const auto& add, const auto& skip) {
     for (std::size_t e = 0; e < q; ++e) {
-      add(static_cast<int>(e), static_cast<int>(e), diagonal_[e]);
-      if (!included_[e]) continue;
-      for (std::uint32_t v : {edges.vertex_a[e], edges.vertex_b[e]}) {
-        if (w[v] == 0.0) continue;
-        for (const std::uint32_t* it = incidence_.begin(v); it != incidence_.end(v); ++it) {
-          const std::uint32_t f = *it;
-          if (f == e || !included_[f]) continue;
-          add(static_cast<int>(e), static_cast<int>(f),
-              w[v] * roleSign(edges, e, f, v) * n[e].dot(n[f]));
-        }
+      const int row = static_cast<int>(e);
+      add(row, row, diagonal_[e]);
+      const Coupling* first = couplings_.data() + coupling_start_[e];
+      const Coupling* end = couplings_.data() + coupling_start_[e + 1];
+      if (!included_[e]) {
+        const auto count =
+            std::count_if(first, end, [&](const Coupling& c) { return w[c.vertex] != 0.0; });
+        skip(static_cast<std::size_t>(count), [&]() {
+          for (const Coupling* c = first; c != end; ++c) {
+            if (w[c->vertex] != 0.0) add(row, static_cast<int>(c->edge), 0.0);
+          }
+        });
+        continue;
+      }
+      for (const Coupling* c = first; c != end; ++c) {
+        if (w[c->vertex] == 0.0) continue;
+        add(row, static_cast<int>(c->edge),
+            included_[c->edge] ? w[c->vertex] * c->sign * n[e].dot(n[c->edge]) : 0.0);
       }
     }
   };
-  // Straight into the analysed pattern while the included edges list the same entries.
+  idle_.resize(q);
+  for (std::size_t e = 0; e < q; ++e) idle_[e] = included_[e] ? 0 : 1;
+  factorization_.leaveOutIdleRows(&idle_);
+  // Straight into the analysed pattern while the free vertices stay the same.
   const Eigen::Index size = static_cast<Eigen::Index>(q);
   bool listed = factorization_.beginDirect(size);
   if (listed) {
-    list([&](int row, int col, double value) {
-      listed = listed && factorization_.addDirect(row, col, value);
-    });
+    list([&](int row, int col,
+             double value) { listed = listed && factorization_.addDirect(row, col, value); },
+         [&](std::size_t count, const auto&) {
+           listed = listed && factorization_.skipDirect(count);
+         });
   }
   if (listed && factorization_.endDirect()) {
     factorization_.factorizeDirect();
   } else {
     triplets_.clear();
-    list([&](int row, int col, double value) { triplets_.emplace_back(row, col, value); });
+    list([&](int row, int col, double value) { triplets_.emplace_back(row, col, value); },
+         [](std::size_t, const auto& list_zeros) { list_zeros(); });
     factorization_.factorize(triplets_, size);
   }
   Eigen::Map<Eigen::VectorXd> b(rhs.data(), static_cast<Eigen::Index>(q));

@@ -37,8 +37,17 @@ namespace yarn_tearing {
 /// from the nonzeros alone). Leaving out exact zeros is the same matrix eliminated in the same
 /// order: the factor differs only in the order its round-off is summed. (A Newton system that keeps
 /// an idle row of stored zeros for every slack edge so that its pattern holds filled the factor of
-/// a 64 x 64 fabric to twice the nonzeros of the taut edges' own pattern.) Copies start without an
-/// analysis (Eigen's solvers cannot be copied).
+/// a 64 x 64 fabric to twice the nonzeros of the taut edges' own pattern.)
+///
+/// With leaveOutIdleRows(), the caller says instead which rows are idle: their entries off the
+/// diagonal are left out, every other entry is kept even when it is zero, and an ordering is
+/// computed from the entries kept rather than from all listed ones. A system listed once with
+/// every entry it may ever use (an edge Gram matrix over all edges, those not in use idle) then
+/// keeps its listed pattern, and a change of the rows in use brings only an analysis of the
+/// entries kept, in the same ordering, until the fill grows past kMostIdleFillGrowth or rows in
+/// use stay the same for kSettledFactorizations (then the next factorize() orders anew;
+/// beginDirect() refuses until it has). Copies start without an analysis (Eigen's solvers
+/// cannot be copied) and without idle rows (the vector belongs to the original's owner).
 class PatternCachedLdlt {
  public:
   PatternCachedLdlt() = default;
@@ -48,6 +57,7 @@ class PatternCachedLdlt {
         threads_(other.threads_) {}
   PatternCachedLdlt& operator=(const PatternCachedLdlt& other) {
     leave_out_zeros_ = other.leave_out_zeros_;
+    idle_rows_ = nullptr;
     most_kept_ = other.most_kept_;
     threads_ = other.threads_;
     kept_.clear();
@@ -58,6 +68,13 @@ class PatternCachedLdlt {
 
   /// From now on, leaves entries that are exactly zero out of the factorization (see above).
   void leaveOutZeros() { leave_out_zeros_ = true; }
+  /// From now on, leaves the entries off the diagonal of the rows that `idle` marks (1 per idle
+  /// row, read at each factorization; it must outlive them) out of the factorization, and orders
+  /// by the others (see above).
+  void leaveOutIdleRows(const std::vector<std::uint8_t>* idle) {
+    leave_out_zeros_ = true;
+    idle_rows_ = idle;
+  }
   /// Keeps the last `most` analyses (at least 1, the default) to be taken up again (see above).
   void keepAnalyses(std::size_t most) { most_kept_ = std::max<std::size_t>(most, 1); }
   /// Threads the factorizations may use [-] (SparseLdlt::setThreads); the factors do not depend
@@ -81,6 +98,13 @@ class PatternCachedLdlt {
     }
     const int slot = direct_slot_[cursor_++];
     if (slot >= 0) direct_values_[slot] += value;
+    return true;
+  }
+  /// Passes over the next `count` entries of the sequence as zeros (an idle row's, with
+  /// leaveOutIdleRows()); false when the sequence has fewer left.
+  bool skipDirect(std::size_t count) {
+    if (cursor_ + count > direct_count_) return false;
+    cursor_ += count;
     return true;
   }
   /// Whether the entries added since beginDirect() were the whole sequence (not only its start);
@@ -127,6 +151,8 @@ class PatternCachedLdlt {
     Eigen::SparseMatrix<double> nonzero;
     /// Per value of upper: its index in nonzero's values, -1 when left out.
     std::vector<int> nonzero_slot;
+    /// Per value of nonzero: its index in upper's values.
+    std::vector<int> nonzero_source;
     SparseLdlt ldlt;
   };
 
@@ -159,6 +185,16 @@ class PatternCachedLdlt {
   bool analyzeNonzeros(bool grow);
   /// Factorizes the front analysis's upper, or with leaveOutZeros() its nonzero entries.
   bool factorizeValues();
+  /// Whether the entry (row, col) of the listed matrix is left out (leaveOutIdleRows()).
+  bool idleEntry(int row, int col) const {
+    return row != col && ((*idle_rows_)[static_cast<std::size_t>(row)] != 0 ||
+                          (*idle_rows_)[static_cast<std::size_t>(col)] != 0);
+  }
+  /// With leaveOutIdleRows(): per row of the front analysis's permuted matrix, whether it is idle.
+  void permuteIdleRows();
+  /// With leaveOutIdleRows(), after an analysis of the entries in use: watchFill() on it, and
+  /// the next factorize() orders anew when the fill has grown.
+  void watchRowsInUse();
 
   /// After factorizing a new analysis: its fill per matrix entry, or whether it has grown past
   /// kMostFillGrowth of the last ordering's (then the next analysis orders anew).
@@ -178,11 +214,28 @@ class PatternCachedLdlt {
   /// buffers the new analysis reuses.
   std::unique_ptr<Analysis> makeRoom();
   bool leave_out_zeros_ = false;  ///< see leaveOutZeros()
-  std::size_t most_kept_ = 1;     ///< see keepAnalyses()
-  int threads_ = 1;               ///< see setThreads()
-  bool ordered_ = false;          ///< the last analysis computed its ordering
-  bool reorder_next_ = true;      ///< the next analysis computes a new ordering
-  double ordered_fill_ = 0.0;     ///< factor nonzeros per matrix nonzero at the last ordering [-]
+  /// The idle rows (leaveOutIdleRows()), or null when zeros are left out by their value.
+  const std::vector<std::uint8_t>* idle_rows_ = nullptr;
+  std::vector<std::uint8_t> permuted_idle_;  ///< *idle_rows_ in the permuted order
+  /// *idle_rows_ when the front analysis's nonzero pattern was last checked against them.
+  std::vector<std::uint8_t> last_idle_;
+  /// The analysis of the nonzeros grew the fill past kMostFillGrowth (leaveOutIdleRows()): the
+  /// next factorize() orders anew even when its sequence is the front analysis's.
+  bool reorder_listed_ = false;
+  /// With leaveOutIdleRows(): the ordering in use was made for the rows in use now.
+  bool ordered_for_rows_ = false;
+  /// With leaveOutIdleRows(): factorizations since the rows in use last changed [-].
+  int settled_ = 0;
+  /// Factorizations after which rows in use that have not changed get an ordering of their own
+  /// (leaveOutIdleRows()) [-]: a fabric at rest keeps its slack edges for thousands of steps.
+  static constexpr int kSettledFactorizations = 16;
+  /// kMostFillGrowth for leaveOutIdleRows(), whose rows in use change in most factorizations [-].
+  static constexpr double kMostIdleFillGrowth = 2.0;
+  std::size_t most_kept_ = 1;  ///< see keepAnalyses()
+  int threads_ = 1;            ///< see setThreads()
+  bool ordered_ = false;       ///< the last analysis computed its ordering
+  bool reorder_next_ = true;   ///< the next analysis computes a new ordering
+  double ordered_fill_ = 0.0;  ///< factor nonzeros per matrix nonzero at the last ordering [-]
   /// The kept analyses, the last factorized first.
   std::vector<std::unique_ptr<Analysis>> kept_;
   std::size_t cursor_ = 0;  ///< the next entry addDirect() expects

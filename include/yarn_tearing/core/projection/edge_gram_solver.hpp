@@ -37,7 +37,11 @@ struct GramSystem {
 /// GramOperator) preconditioned by the yarns' own blocks (ChainPreconditioner), started from the
 /// last solution, to a relative residual of kIterativeTolerance, from kIterativeEdges edges on
 /// (a 64 x 64 fabric: 8,064); where that does not converge within kMostIterations, and for
-/// regularized systems (the least-squares tension), a sparse LDL^T.
+/// regularized systems (the least-squares tension), a sparse LDL^T. Its matrix lists every pair
+/// of edges that meet at a free vertex, the rows of edges not taking part idle
+/// (PatternCachedLdlt::leaveOutIdleRows): while the taut set changes, as in every pivoting pass
+/// of a flapping fabric's fast iterations, the listed pattern holds and only the entries in use
+/// are analysed anew, in the same ordering.
 class EdgeGramSolver {
  public:
   /// Learns the edge graph; call whenever edges are added (breaking does not change it).
@@ -75,6 +79,8 @@ class EdgeGramSolver {
   bool solveIterative(const EdgeSet& edges, const GramSystem& system, std::vector<double>& rhs,
                       const std::vector<double>& guess);
   void solveGeneral(const EdgeSet& edges, const GramSystem& system, std::vector<double>& rhs);
+  /// Lists each edge's couplings (couplings_, coupling_start_).
+  void listCouplings(const EdgeSet& edges);
 
   /// Relative residual |b - A x| / |b| at which conjugate gradients stop [-]: far below the
   /// projection's constraint_tolerance, so the projection's iterates are those of an exact solve
@@ -106,6 +112,17 @@ class EdgeGramSolver {
   std::vector<Eigen::Triplet<double>> triplets_;
   /// The general path's factorization, its symbolic analysis kept while the pattern holds.
   PatternCachedLdlt factorization_;
+  std::vector<std::uint8_t> idle_;  ///< per edge: not included (an idle row of the general path)
+  /// Another edge meeting an edge at one of its vertices: G_ef = w_v sign n_e . n_f.
+  struct Coupling {
+    std::uint32_t edge;    ///< f
+    std::uint32_t vertex;  ///< v
+    double sign;           ///< g_ev . g_fv / (n_e . n_f): +1 or -1
+  };
+  /// Each edge's couplings, in the order of its vertices and their incidence lists: edge e's are
+  /// couplings_[coupling_start_[e] .. coupling_start_[e + 1]).
+  std::vector<Coupling> couplings_;
+  std::vector<std::uint32_t> coupling_start_;
 };
 
 }  // namespace yarn_tearing
