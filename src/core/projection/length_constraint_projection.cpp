@@ -384,7 +384,7 @@ ProjectionResult LengthConstraintProjection::projectFast(
   // symmetric system exactly, with final directions.
   if (step_start != nullptr && contacts == nullptr) chooseCorrectionDirections(*step_start, edges);
   warmStartActiveSet(edges);
-  newton_.beginProjection(parameters.time_step);
+  newton_.beginProjection(parameters.time_step, slack_tolerance_);
   for (;;) {
     checkConvergence(position, edges, parameters, contacts, loop, result);
     if (result.converged || result.iterations >= parameters.max_projection_iterations) break;

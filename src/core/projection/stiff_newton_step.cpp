@@ -506,7 +506,7 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
         continue;
       }
       stretch_[e] = linearizedStretch(edges, stretch_state, e, position);
-      if (stretch_[e] > kSlackTolerance * edges.rest_length[e]) {
+      if (stretch_[e] > slack_tolerance_ * edges.rest_length[e]) {
         taut[e] = 1;
         frontier_.joined(e);
         changed = true;

@@ -100,9 +100,12 @@ class StiffNewtonStep {
   /// not backward stable.
   void refineSolves() { refine_ = true; }
   /// Starts a projection's Newton steps of a step of `time_step` [s]: counts them from here
-  /// (kStickingNewtonSteps) and sets the contact rows' compliance (kContactCompliance).
-  void beginProjection(double time_step) {
+  /// (kStickingNewtonSteps), sets the contact rows' compliance (kContactCompliance) and the
+  /// stretch per rest length [-] past which pivoting takes a slack edge in (`slack_tolerance`:
+  /// the projection's, a tenth of its constraint tolerance, as in its fast iterations).
+  void beginProjection(double time_step, double slack_tolerance) {
     newton_steps_ = 0;
+    slack_tolerance_ = slack_tolerance;
     refine_ = false;
     full_pivoting_ = false;
     stopped_early_ = false;
@@ -264,9 +267,11 @@ class StiffNewtonStep {
   /// 5-12. Later Newton steps pivot fully, so that an iteration whose taut set cycles still
   /// ends [-].
   static constexpr int kQuickNewtonSteps = 8;
-  bool full_pivoting_ = false;                     ///< see pivotFully()
-  bool stopped_early_ = false;                     ///< see stoppedEarly()
-  static constexpr double kSlackTolerance = 1e-9;  ///< stretch (per rest length) that makes taut
+  bool full_pivoting_ = false;  ///< see pivotFully()
+  bool stopped_early_ = false;  ///< see stoppedEarly()
+  /// A contact's gap, slip or move (per its length scale) below which it counts as none [-].
+  static constexpr double kSlackTolerance = 1e-9;
+  double slack_tolerance_ = kSlackTolerance;  ///< see beginProjection()
   /// Every edge joins consecutive vertices (chains): the rows are then banded and factorized in
   /// natural order, O(N); other graphs use Eigen's default (AMD) ordering.
   bool banded_ = false;
