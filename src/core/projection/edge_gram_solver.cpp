@@ -158,7 +158,8 @@ void EdgeGramSolver::solveGeneral(const EdgeSet& edges, const GramSystem& system
   const std::size_t q = edges.size();
   // Every pair of edges that meet at a free vertex is listed, the rows of edges not included
   // idle: the pattern holds while the included edges change (PatternCachedLdlt::leaveOutIdleRows).
-  // An idle row's entries are zeros: `skip(e, count, list_zeros)` passes over its `count`.
+  // An idle row's entries are zeros: `skip(count, list_zeros)` passes over its `count` of them
+  // (or lists them, through `list_zeros()`).
   const auto list = [&](const auto& add, const auto& skip) {
     for (std::size_t e = 0; e < q; ++e) {
       const int row = static_cast<int>(e);
