@@ -161,15 +161,15 @@ TEST(PatternCachedLdlt, KeptAnalysesAreTakenUpAgainAndEachSolvesItsOwnSystem) {
 }
 
 /// An edge Gram matrix listed with every entry it may use: `n` rows in a ring, each coupled to
-/// the next by -0.3 where both are in use (0 where either is idle) and to the one `n / 2` away
-/// by 0.1; the coupling of rows 1 and 2 is 0 even while both are in use (a warp and a weft edge
-/// at right angles). Idle rows keep their diagonal.
-std::vector<Eigen::Triplet<double>> ringGram(int n, const std::vector<std::uint8_t>& idle) {
+/// the next by -0.3 where both are in use (`in_use`; 0 where either is idle) and to the one
+/// `n / 2` away by 0.1; the coupling of rows 1 and 2 is 0 even while both are in use (a warp and
+/// a weft edge at right angles). Idle rows keep their diagonal.
+std::vector<Eigen::Triplet<double>> ringGram(int n, const std::vector<std::uint8_t>& in_use) {
   std::vector<Eigen::Triplet<double>> entries;
   const auto couple = [&](int a, int b, double value) {
-    const double in_use = idle[a] || idle[b] ? 0.0 : value;
-    entries.emplace_back(a, b, in_use);
-    entries.emplace_back(b, a, in_use);
+    const double coupling = in_use[a] && in_use[b] ? value : 0.0;
+    entries.emplace_back(a, b, coupling);
+    entries.emplace_back(b, a, coupling);
   };
   for (int e = 0; e < n; ++e) {
     entries.emplace_back(e, e, 1.0 + 0.01 * e);
@@ -191,25 +191,26 @@ bool factorizeGram(PatternCachedLdlt& ldlt, const std::vector<Eigen::Triplet<dou
 
 TEST(PatternCachedLdlt, IdleRowsLeaveTheirEntriesOutWhileTheListedPatternHolds) {
   constexpr int kRows = 40;
-  std::vector<std::uint8_t> first(kRows, 0);
-  std::vector<std::uint8_t> second(kRows, 0);
-  for (int e = 0; e < kRows; e += 5) first[e] = 1;
-  for (int e = 2; e < kRows; e += 7) second[e] = 1;
-  std::vector<std::uint8_t> idle = first;
+  // Every fifth row idle, then every seventh from row 2.
+  std::vector<std::uint8_t> first(kRows, 1);
+  std::vector<std::uint8_t> second(kRows, 1);
+  for (int e = 0; e < kRows; e += 5) first[e] = 0;
+  for (int e = 2; e < kRows; e += 7) second[e] = 0;
+  std::vector<std::uint8_t> in_use = first;
   PatternCachedLdlt ldlt;
-  ldlt.leaveOutIdleRows(&idle);
+  ldlt.leaveOutIdleRows(&in_use);
   const Eigen::VectorXd rhs = Eigen::VectorXd::LinSpaced(kRows, -1.0, 2.0);
-  ASSERT_TRUE(factorizeGram(ldlt, ringGram(kRows, idle), kRows));
+  ASSERT_TRUE(factorizeGram(ldlt, ringGram(kRows, in_use), kRows));
   // The idle rows' entries are left out and the zero coupling of rows 1 and 2 is kept: the
   // factor is that of the rows in use listed alone, with a nonzero there.
-  std::vector<Eigen::Triplet<double>> in_use;
-  for (const Eigen::Triplet<double>& t : ringGram(kRows, idle)) {
-    if (t.row() != t.col() && (idle[t.row()] || idle[t.col()])) continue;
+  std::vector<Eigen::Triplet<double>> used_alone;
+  for (const Eigen::Triplet<double>& t : ringGram(kRows, in_use)) {
+    if (t.row() != t.col() && !(in_use[t.row()] && in_use[t.col()])) continue;
     const bool zero_pair = t.row() + t.col() == 3 && t.row() * t.col() == 2;
-    in_use.emplace_back(t.row(), t.col(), zero_pair ? -0.3 : t.value());
+    used_alone.emplace_back(t.row(), t.col(), zero_pair ? -0.3 : t.value());
   }
   PatternCachedLdlt alone;
-  ASSERT_TRUE(alone.factorize(in_use, kRows));
+  ASSERT_TRUE(alone.factorize(used_alone, kRows));
   EXPECT_EQ(ldlt.factorNonZeros(), alone.factorNonZeros());
 
   // Two sets of rows in use, alternating: each solves its own system, with the one listed
@@ -217,8 +218,8 @@ TEST(PatternCachedLdlt, IdleRowsLeaveTheirEntriesOutWhileTheListedPatternHolds) 
   // that the first leaves idle grow the analysed entries once; then both fit them.
   for (int pass = 0; pass < 4; ++pass) {
     for (const std::vector<std::uint8_t>* set : {&first, &second}) {
-      idle = *set;
-      const std::vector<Eigen::Triplet<double>> entries = ringGram(kRows, idle);
+      in_use = *set;
+      const std::vector<Eigen::Triplet<double>> entries = ringGram(kRows, in_use);
       ASSERT_TRUE(factorizeGram(ldlt, entries, kRows));
       const Eigen::VectorXd expected = denseSolve(entries, kRows, rhs);
       EXPECT_LT((ldlt.solve(rhs) - expected).norm(), 1e-12 * expected.norm());
@@ -230,16 +231,16 @@ TEST(PatternCachedLdlt, IdleRowsLeaveTheirEntriesOutWhileTheListedPatternHolds) 
 
 TEST(PatternCachedLdlt, IdleRowsThatSettleGetAnOrderingOfTheirOwn) {
   constexpr int kRows = 40;
-  std::vector<std::uint8_t> idle(kRows, 0);
+  std::vector<std::uint8_t> in_use(kRows, 1);
   PatternCachedLdlt ldlt;
-  ldlt.leaveOutIdleRows(&idle);
-  ASSERT_TRUE(factorizeGram(ldlt, ringGram(kRows, idle), kRows));
+  ldlt.leaveOutIdleRows(&in_use);
+  ASSERT_TRUE(factorizeGram(ldlt, ringGram(kRows, in_use), kRows));
   ASSERT_EQ(ldlt.analyses(), 1);
   // Every fourth row idle from now on: the ring falls apart into chains, first in the ring's
   // ordering; once they have settled they are ordered anew (one more listed analysis), and the
   // solutions stay those of their system throughout.
-  for (int e = 0; e < kRows; e += 4) idle[e] = 1;
-  const std::vector<Eigen::Triplet<double>> entries = ringGram(kRows, idle);
+  for (int e = 0; e < kRows; e += 4) in_use[e] = 0;
+  const std::vector<Eigen::Triplet<double>> entries = ringGram(kRows, in_use);
   const Eigen::VectorXd rhs = Eigen::VectorXd::LinSpaced(kRows, 3.0, -1.0);
   const Eigen::VectorXd expected = denseSolve(entries, kRows, rhs);
   for (int k = 0; k < 40; ++k) {

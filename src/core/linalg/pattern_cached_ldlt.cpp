@@ -83,11 +83,11 @@ bool PatternCachedLdlt::analyze(const std::vector<Eigen::Triplet<double>>& entri
     // The ordering Eigen's SimplicialLDLT would choose: AMD on the symmetric matrix of the lower
     // triangle.
     Eigen::SparseMatrix<double> full(size, size);
-    if (idle_rows_ != nullptr) {
+    if (rows_in_use_ != nullptr) {
       std::vector<Eigen::Triplet<double>> kept;
       kept.reserve(entries.size());
       for (const Eigen::Triplet<double>& t : entries) {
-        if (!idleEntry(t.row(), t.col())) kept.push_back(t);
+        if (entryInUse(t.row(), t.col())) kept.push_back(t);
       }
       full.setFromTriplets(kept.begin(), kept.end());
     } else {
@@ -134,26 +134,24 @@ PatternCachedLdlt::NonzeroFit PatternCachedLdlt::copyNonzeros() {
   double left_out = 0.0;  // where a value left out of the pattern goes
   Eigen::Index zeros = 0;
   int outside = 0;
-  if (idle_rows_ != nullptr && *idle_rows_ == last_idle_) {
+  if (rows_in_use_ != nullptr && *rows_in_use_ == last_in_use_) {
     // The rows in use as in the last factorization: its pattern fits.
     const int* source = a.nonzero_source.data();
     for (std::size_t i = 0; i < a.nonzero_source.size(); ++i) kept[i] = values[source[i]];
     return NonzeroFit::kFits;
   }
-  if (idle_rows_ != nullptr) {
+  if (rows_in_use_ != nullptr) {
     // By the rows in use: an entry is kept where both its rows are (or on the diagonal).
-    last_idle_ = *idle_rows_;
+    last_in_use_ = *rows_in_use_;
     ordered_for_rows_ = false;
     settled_ = 0;
-    permuteIdleRows();
+    permuteRowsInUse();
     const int* outer = a.upper.outerIndexPtr();
     const int* inner = a.upper.innerIndexPtr();
     for (Eigen::Index j = 0; j < a.upper.outerSize(); ++j) {
-      const bool idle_column = permuted_idle_[static_cast<std::size_t>(j)] != 0;
       for (int k = outer[j]; k < outer[j + 1]; ++k) {
         const bool within = slot[k] >= 0;
-        const bool idle =
-            inner[k] != j && (idle_column || permuted_idle_[static_cast<std::size_t>(inner[k])]);
+        const bool idle = !permutedEntryInUse(inner[k], j);
         *(within ? kept + slot[k] : &left_out) = values[k];
         zeros += static_cast<Eigen::Index>(within & idle);
         outside |= static_cast<int>(!within & !idle);
@@ -188,11 +186,10 @@ bool PatternCachedLdlt::analyzeNonzeros(bool grow) {
   // Grown, the pattern keeps what it held: entries that come and go (a slack edge that turns
   // taut now and then) then stay in it instead of bringing an analysis each time they return.
   if (!grow) a.nonzero_slot.assign(static_cast<std::size_t>(a.upper.nonZeros()), -1);
-  if (idle_rows_ != nullptr) permuteIdleRows();
+  if (rows_in_use_ != nullptr) permuteRowsInUse();
   const auto in_use = [&](Eigen::Index j, int k) {
-    if (idle_rows_ == nullptr) return values[k] != 0.0 || inner[k] == j;
-    return inner[k] == j || (permuted_idle_[static_cast<std::size_t>(j)] == 0 &&
-                             permuted_idle_[static_cast<std::size_t>(inner[k])] == 0);
+    if (rows_in_use_ == nullptr) return values[k] != 0.0 || inner[k] == j;
+    return permutedEntryInUse(inner[k], j);
   };
   int kept = 0;
   a.nonzero_source.clear();
@@ -227,8 +224,9 @@ bool PatternCachedLdlt::factorizeValues() {
   if (fit != NonzeroFit::kFits) {
     if (!analyzeNonzeros(fit == NonzeroFit::kGrow)) return false;
     copyNonzeros();  // into the pattern just analysed
-    if (idle_rows_ != nullptr) watchRowsInUse();
-  } else if (idle_rows_ != nullptr && !ordered_for_rows_ && ++settled_ == kSettledFactorizations) {
+    if (rows_in_use_ != nullptr) watchRowsInUse();
+  } else if (rows_in_use_ != nullptr && !ordered_for_rows_ &&
+             ++settled_ == kSettledFactorizations) {
     reorder_next_ = true;  // rows in use that have settled get an ordering of their own
     reorder_listed_ = true;
   }
@@ -245,12 +243,12 @@ void PatternCachedLdlt::watchRowsInUse() {
   settled_ = 0;
 }
 
-void PatternCachedLdlt::permuteIdleRows() {
+void PatternCachedLdlt::permuteRowsInUse() {
   const Analysis& a = *kept_.front();
-  permuted_idle_.resize(static_cast<std::size_t>(a.new_index.size()));
+  permuted_in_use_.resize(static_cast<std::size_t>(a.new_index.size()));
   for (Eigen::Index i = 0; i < a.new_index.size(); ++i) {
-    permuted_idle_[static_cast<std::size_t>(a.new_index[i])] =
-        (*idle_rows_)[static_cast<std::size_t>(i)];
+    permuted_in_use_[static_cast<std::size_t>(a.new_index[i])] =
+        (*rows_in_use_)[static_cast<std::size_t>(i)];
   }
 }
 
@@ -263,7 +261,7 @@ void PatternCachedLdlt::watchFill(bool analysed) {
   if (ordered_) {
     ordered_fill_ = fill;
   } else if (fill >
-             (idle_rows_ != nullptr ? kMostIdleFillGrowth : kMostFillGrowth) * ordered_fill_) {
+             (rows_in_use_ != nullptr ? kMostIdleFillGrowth : kMostFillGrowth) * ordered_fill_) {
     reorder_next_ = true;
   }
 }

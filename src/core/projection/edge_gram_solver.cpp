@@ -183,9 +183,7 @@ void EdgeGramSolver::solveGeneral(const EdgeSet& edges, const GramSystem& system
       }
     }
   };
-  idle_.resize(q);
-  for (std::size_t e = 0; e < q; ++e) idle_[e] = included_[e] ? 0 : 1;
-  factorization_.leaveOutIdleRows(&idle_);
+  factorization_.leaveOutIdleRows(&included_);
   // Straight into the analysed pattern while the free vertices stay the same.
   const Eigen::Index size = static_cast<Eigen::Index>(q);
   bool listed = factorization_.beginDirect(size);

@@ -39,13 +39,13 @@ namespace yarn_tearing {
 /// an idle row of stored zeros for every slack edge so that its pattern holds filled the factor of
 /// a 64 x 64 fabric to twice the nonzeros of the taut edges' own pattern.)
 ///
-/// With leaveOutIdleRows(), the caller says instead which rows are idle: their entries off the
-/// diagonal are left out, every other entry is kept even when it is zero, and an ordering is
-/// computed from the entries kept rather than from all listed ones. A system listed once with
-/// every entry it may ever use (an edge Gram matrix over all edges, those not in use idle) then
-/// keeps its listed pattern, and a change of the rows in use brings only an analysis of the
-/// entries kept, in the same ordering, until the fill grows past kMostIdleFillGrowth or rows in
-/// use stay the same for kSettledFactorizations (then the next factorize() orders anew;
+/// With leaveOutIdleRows(), the caller says instead which rows are in use: the entries off the
+/// diagonal of the others (idle rows) are left out, every other entry is kept even when it is zero,
+/// and an ordering is computed from the entries kept rather than from all listed ones. A system
+/// listed once with every entry it may ever use (an edge Gram matrix over all edges, those not in
+/// use idle) then keeps its listed pattern, and a change of the rows in use brings only an analysis
+/// of the entries kept, in the same ordering, until the fill grows past kMostIdleFillGrowth or rows
+/// in use stay the same for kSettledFactorizations (then the next factorize() orders anew;
 /// beginDirect() refuses until it has). Copies start without an analysis (Eigen's solvers
 /// cannot be copied) and without idle rows (the vector belongs to the original's owner).
 class PatternCachedLdlt {
@@ -57,7 +57,7 @@ class PatternCachedLdlt {
         threads_(other.threads_) {}
   PatternCachedLdlt& operator=(const PatternCachedLdlt& other) {
     leave_out_zeros_ = other.leave_out_zeros_;
-    idle_rows_ = nullptr;
+    rows_in_use_ = nullptr;
     most_kept_ = other.most_kept_;
     threads_ = other.threads_;
     kept_.clear();
@@ -68,12 +68,12 @@ class PatternCachedLdlt {
 
   /// From now on, leaves entries that are exactly zero out of the factorization (see above).
   void leaveOutZeros() { leave_out_zeros_ = true; }
-  /// From now on, leaves the entries off the diagonal of the rows that `idle` marks (1 per idle
-  /// row, read at each factorization; it must outlive them) out of the factorization, and orders
-  /// by the others (see above).
-  void leaveOutIdleRows(const std::vector<std::uint8_t>* idle) {
+  /// From now on, leaves the entries off the diagonal of the rows that `in_use` marks 0 (idle;
+  /// 1 for a row in use, read at each factorization: it must outlive them) out of the
+  /// factorization, and orders by the others (see above).
+  void leaveOutIdleRows(const std::vector<std::uint8_t>* in_use) {
     leave_out_zeros_ = true;
-    idle_rows_ = idle;
+    rows_in_use_ = in_use;
   }
   /// Keeps the last `most` analyses (at least 1, the default) to be taken up again (see above).
   void keepAnalyses(std::size_t most) { most_kept_ = std::max<std::size_t>(most, 1); }
@@ -185,13 +185,20 @@ class PatternCachedLdlt {
   bool analyzeNonzeros(bool grow);
   /// Factorizes the front analysis's upper, or with leaveOutZeros() its nonzero entries.
   bool factorizeValues();
-  /// Whether the entry (row, col) of the listed matrix is left out (leaveOutIdleRows()).
-  bool idleEntry(int row, int col) const {
-    return row != col && ((*idle_rows_)[static_cast<std::size_t>(row)] != 0 ||
-                          (*idle_rows_)[static_cast<std::size_t>(col)] != 0);
+  /// Whether the entry (row, col) of the listed matrix is in use (leaveOutIdleRows()).
+  bool entryInUse(int row, int col) const {
+    return row == col || ((*rows_in_use_)[static_cast<std::size_t>(row)] != 0 &&
+                          (*rows_in_use_)[static_cast<std::size_t>(col)] != 0);
   }
-  /// With leaveOutIdleRows(): per row of the front analysis's permuted matrix, whether it is idle.
-  void permuteIdleRows();
+  /// The same for the entry (row, col) of the front analysis's permuted matrix (after
+  /// permuteRowsInUse()).
+  bool permutedEntryInUse(int row, Eigen::Index col) const {
+    return row == col || (permuted_in_use_[static_cast<std::size_t>(row)] != 0 &&
+                          permuted_in_use_[static_cast<std::size_t>(col)] != 0);
+  }
+  /// With leaveOutIdleRows(): per row of the front analysis's permuted matrix, whether it is in
+  /// use (permuted_in_use_).
+  void permuteRowsInUse();
   /// With leaveOutIdleRows(), after an analysis of the entries in use: watchFill() on it, and
   /// the next factorize() orders anew when the fill has grown.
   void watchRowsInUse();
@@ -214,11 +221,11 @@ class PatternCachedLdlt {
   /// buffers the new analysis reuses.
   std::unique_ptr<Analysis> makeRoom();
   bool leave_out_zeros_ = false;  ///< see leaveOutZeros()
-  /// The idle rows (leaveOutIdleRows()), or null when zeros are left out by their value.
-  const std::vector<std::uint8_t>* idle_rows_ = nullptr;
-  std::vector<std::uint8_t> permuted_idle_;  ///< *idle_rows_ in the permuted order
-  /// *idle_rows_ when the front analysis's nonzero pattern was last checked against them.
-  std::vector<std::uint8_t> last_idle_;
+  /// The rows in use (leaveOutIdleRows()), or null when zeros are left out by their value.
+  const std::vector<std::uint8_t>* rows_in_use_ = nullptr;
+  std::vector<std::uint8_t> permuted_in_use_;  ///< *rows_in_use_ in the permuted order
+  /// *rows_in_use_ when the front analysis's nonzero pattern was last checked against them.
+  std::vector<std::uint8_t> last_in_use_;
   /// The analysis of the nonzeros grew the fill past kMostFillGrowth (leaveOutIdleRows()): the
   /// next factorize() orders anew even when its sequence is the front analysis's.
   bool reorder_listed_ = false;

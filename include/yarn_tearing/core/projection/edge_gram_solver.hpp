@@ -112,7 +112,6 @@ class EdgeGramSolver {
   std::vector<Eigen::Triplet<double>> triplets_;
   /// The general path's factorization, its symbolic analysis kept while the pattern holds.
   PatternCachedLdlt factorization_;
-  std::vector<std::uint8_t> idle_;  ///< per edge: not included (an idle row of the general path)
   /// Another edge meeting an edge at one of its vertices: G_ef = w_v sign n_e . n_f.
   struct Coupling {
     std::uint32_t edge;    ///< f
