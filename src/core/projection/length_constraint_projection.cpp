@@ -503,6 +503,13 @@ void LengthConstraintProjection::checkConvergence(const std::vector<Eigen::Vecto
   result.force_mismatch =
       forceMismatch(position, edges, fast_contacts_ != nullptr ? fast_contacts_ : contacts);
   result.converged = result.force_mismatch <= parameters.constraint_tolerance;
+  // The start directions' own mismatch does not shrink as the lengths converge: where it
+  // stalls, finish on final directions now rather than after kStartDirectionIterations.
+  if (!result.converged && any_start_direction_ &&
+      result.force_mismatch > kMismatchProgress * loop.last_mismatch) {
+    resetCorrectionDirections(edges.size());
+  }
+  loop.last_mismatch = result.force_mismatch;
   // Newton steps with contacts that have settled but for the force directions have stalled
   // at the round-off of their solve (a wrap at (omega dt)^2 ~ 1e7): refine their solves.
   if (!result.converged && contacts != nullptr && result.iterations > 0) newton_.refineSolves();

@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "yarn_tearing/core/contact/contact_set.hpp"
@@ -153,6 +154,8 @@ class LengthConstraintProjection {
     bool fast_iterations_stalled = false;
     /// The fast iterations held the lengths but not the forces' directions (force_mismatch).
     bool mismatch_needed_newton = false;
+    /// Force mismatch at the last iterate that held the lengths [-] (infinity: none yet).
+    double last_mismatch = std::numeric_limits<double>::infinity();
   };
   /// Sizes the work arrays, keeps the prediction (predicted_) and, with contacts, starts the
   /// free vertices at the step's start from the last multipliers; returns the Gram system of the
@@ -266,6 +269,10 @@ class LengthConstraintProjection {
   static constexpr double kStartDirectionStiffness = 0.25;
   /// Iterations after which a projection not yet converged drops the start directions.
   static constexpr int kStartDirectionIterations = 20;
+  /// Share of the last force mismatch [-] that an iterate holding the lengths must get below
+  /// for the start directions to be kept: the ends that take them feel the forces along them
+  /// in the Newton steps too, so a mismatch they cause stays as the lengths converge.
+  static constexpr double kMismatchProgress = 0.5;
   /// Smallest cosine [-] between an edge's start and predicted directions for the start one
   /// to be used (an edge that turned further, e.g. a whipping slack end, is corrected along
   /// its current direction).
