@@ -401,9 +401,10 @@ ProjectionResult LengthConstraintProjection::projectFast(
     if (!loop.use_newton && result.iterations >= kFastIterations) {
       loop.fast_iterations_stalled = true;
     }
-    // Not converged with start directions (a step that tears or jerks the piece far from where
-    // it started): finish on final directions, which always converge.
-    if (result.iterations == kStartDirectionIterations) resetCorrectionDirections(edges.size());
+    // Not converged with start directions within a few Newton steps (a step that tears or jerks
+    // the piece far from where it started): finish on final directions. Their Newton systems are
+    // symmetric, and pivoting on them settles the taut set in fewer solves.
+    if (newton_.steps() == kStartDirectionNewtonSteps) resetCorrectionDirections(edges.size());
     if (loop.use_newton || result.iterations >= kFastIterations) {
       // The fast iterations stall (a light yarn swung hard by a heavy end): finish with Newton
       // steps that include the geometric stiffness.
@@ -503,13 +504,6 @@ void LengthConstraintProjection::checkConvergence(const std::vector<Eigen::Vecto
   result.force_mismatch =
       forceMismatch(position, edges, fast_contacts_ != nullptr ? fast_contacts_ : contacts);
   result.converged = result.force_mismatch <= parameters.constraint_tolerance;
-  // The start directions' own mismatch does not shrink as the lengths converge: where it
-  // stalls, finish on final directions now rather than after kStartDirectionIterations.
-  if (!result.converged && any_start_direction_ &&
-      result.force_mismatch > kMismatchProgress * loop.last_mismatch) {
-    resetCorrectionDirections(edges.size());
-  }
-  loop.last_mismatch = result.force_mismatch;
   // Newton steps with contacts that have settled but for the force directions have stalled
   // at the round-off of their solve (a wrap at (omega dt)^2 ~ 1e7): refine their solves.
   if (!result.converged && contacts != nullptr && result.iterations > 0) newton_.refineSolves();

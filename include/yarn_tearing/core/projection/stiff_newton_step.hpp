@@ -93,6 +93,8 @@ class StiffNewtonStep {
     return general_factorization_.factorAnalyses() + condensed_factorization_.factorAnalyses() +
            contact_factorization_.factorAnalyses();
   }
+  /// Newton steps taken since beginProjection() [-].
+  int steps() const { return newton_steps_; }
   /// From now on in this projection, every Newton step pivots until its taut set holds.
   void pivotFully() { full_pivoting_ = true; }
   /// From now on in this projection, each Newton step's solve takes one pass of iterative
