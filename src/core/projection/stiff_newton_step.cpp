@@ -133,7 +133,10 @@ void StiffNewtonStep::chooseCondensation(const EdgeSet& edges, const EdgeInciden
   }
   const bool any =
       condensation_.choose(edges, incidence, vertex_row_, system_row_, plain_, rows) > 0;
-  condensing_ = any && condensation_.eliminated() == last_eliminated_;
+  same_eliminated_ = condensation_.eliminated() == last_eliminated_
+                         ? std::min(same_eliminated_ + 1, kCondensedAfterSolves)
+                         : 0;
+  condensing_ = any && same_eliminated_ >= kCondensedAfterSolves;
   last_eliminated_ = condensation_.eliminated();
 }
 

@@ -269,6 +269,12 @@ class StiffNewtonStep {
   /// 5-12. Later Newton steps pivot fully, so that an iteration whose taut set cycles still
   /// ends [-].
   static constexpr int kQuickNewtonSteps = 8;
+  /// Solves in a row that must have eliminated the same vertices as the one before them for the
+  /// next to be condensed: a reduced system's analysis (a new ordering) pays only over many
+  /// solves. In a fabric that tears and whips, the slow vertices change every step and the start
+  /// directions are dropped within LengthConstraintProjection::kStartDirectionNewtonSteps; in a
+  /// held fabric they stay the same for hundreds of steps [-].
+  static constexpr int kCondensedAfterSolves = 3;
   bool full_pivoting_ = false;  ///< see pivotFully()
   bool stopped_early_ = false;  ///< see stoppedEarly()
   /// A contact's gap, slip or move (per its length scale) below which it counts as none [-].
@@ -332,10 +338,13 @@ class StiffNewtonStep {
   /// Eliminates the vertices no edge stiffens from the general path's system (solveAssembled
   /// then condenses and expands); a held fabric's Newton system shrinks to about one row an edge.
   VertexCondensation condensation_;
-  /// This solve's system is condensed: only when the last solve would have eliminated the same
-  /// vertices, so that a scene whose slow vertices change from step to step keeps the full
-  /// system's analysis rather than analysing a new reduced one in every step.
+  /// This solve's system is condensed: only when the last kCondensedAfterSolves solves would
+  /// have eliminated the same vertices, so that a scene whose slow vertices change from step to
+  /// step keeps the full system's analysis rather than analysing a new reduced one in every step.
   bool condensing_ = false;
+  /// Solves in a row, up to this one, that would have eliminated the same vertices as the
+  /// solve before them, counted up to kCondensedAfterSolves [-].
+  int same_eliminated_ = 0;
   bool force_full_ = false;                      ///< see forceFullSystems()
   bool force_fresh_ = false;                     ///< see forceFreshFactorizations()
   long factorizations_ = 0;                      ///< see factorizations()
