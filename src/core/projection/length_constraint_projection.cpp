@@ -401,10 +401,16 @@ ProjectionResult LengthConstraintProjection::projectFast(
     if (!loop.use_newton && result.iterations >= kFastIterations) {
       loop.fast_iterations_stalled = true;
     }
-    // Not converged with start directions within a few Newton steps (a step that tears or jerks
-    // the piece far from where it started): finish on final directions. Their Newton systems are
-    // symmetric, and pivoting on them settles the taut set in fewer solves.
-    if (newton_.steps() == kStartDirectionNewtonSteps) resetCorrectionDirections(edges.size());
+    // Not converged with start directions (a step that tears or jerks the piece far from where
+    // it started): finish on final directions, which always converge. Their Newton systems are
+    // symmetric, and pivoting on them settles a changing taut set in fewer solves: so also once
+    // a Newton step past the first few still changed its taut set.
+    const bool still_pivoting =
+        newton_.steps() >= kStartDirectionNewtonSteps && newton_.stoppedEarly();
+    if (any_start_direction_ &&
+        (still_pivoting || result.iterations == kStartDirectionIterations)) {
+      resetCorrectionDirections(edges.size());
+    }
     if (loop.use_newton || result.iterations >= kFastIterations) {
       // The fast iterations stall (a light yarn swung hard by a heavy end): finish with Newton
       // steps that include the geometric stiffness.

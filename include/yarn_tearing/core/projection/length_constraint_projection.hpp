@@ -264,9 +264,11 @@ class LengthConstraintProjection {
   /// Largest (omega dt)^2 [-] of a vertex corrected along start directions: the explicit
   /// treatment of its sideways mode is stable below 4 (Stormer-Verlet), kept well inside.
   static constexpr double kStartDirectionStiffness = 0.25;
-  /// Newton steps after which a projection not yet converged drops the start directions: a
-  /// swing converges within them (the pendulums of energy_drift_test.cpp keep the same energy at
-  /// 3 as at 20), a step whose taut set changes pivots on a system they make unsymmetric.
+  /// Iterations after which a projection not yet converged drops the start directions.
+  static constexpr int kStartDirectionIterations = 20;
+  /// Newton steps after which a projection whose last Newton step still changed its taut set
+  /// (a quick step that stopped early) drops the start directions: pivoting on the unsymmetric
+  /// systems they make takes many solves to settle a taut set that a tear or a whip changes.
   static constexpr int kStartDirectionNewtonSteps = 3;
   /// Smallest cosine [-] between an edge's start and predicted directions for the start one
   /// to be used (an edge that turned further, e.g. a whipping slack end, is corrected along
