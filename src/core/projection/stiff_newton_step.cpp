@@ -474,6 +474,7 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
   stretch_.resize(edges.size());
   frontier_.reset(edges.size());
   leaves_.assign(edges.size(), 0);
+  released_push_.assign(edges.size(), 0.0);
   // Block principal pivoting, as in the fast iterations: release the taut edges that would
   // push, take in the slack ones that the step would stretch (with the taut frontier), solve
   // again. On a contact-free graph that is no chain, the first kQuickNewtonSteps solve once:
@@ -498,6 +499,7 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
       if (taut[e]) {
         if (pass_multiplier_[e] < 0.0 && frontier_.mayLeave(e) && leaves_[e] < kMostLeaves) {
           ++leaves_[e];
+          released_push_[e] = -pass_multiplier_[e];
           taut[e] = 0;
           frontier_.left(e);
           stretch_state.release(edges, e);

@@ -95,6 +95,12 @@ class StiffNewtonStep {
   }
   /// Newton steps taken since beginProjection() [-].
   int steps() const { return newton_steps_; }
+  /// How hard edge `e` would have pushed where the last apply() of this projection released it
+  /// from the taut set: minus its multiplier in the solve that released it [kg m]; 0 where it
+  /// was not released.
+  double releasedPush(std::size_t e) const {
+    return e < released_push_.size() ? released_push_[e] : 0.0;
+  }
   /// From now on in this projection, every Newton step pivots until its taut set holds.
   void pivotFully() { full_pivoting_ = true; }
   /// From now on in this projection, each Newton step's solve takes one pass of iterative
@@ -107,6 +113,7 @@ class StiffNewtonStep {
   /// the projection's, a tenth of its constraint tolerance, as in its fast iterations).
   void beginProjection(double time_step, double slack_tolerance) {
     newton_steps_ = 0;
+    released_push_.clear();
     slack_tolerance_ = slack_tolerance;
     refine_ = false;
     full_pivoting_ = false;
@@ -260,7 +267,8 @@ class StiffNewtonStep {
   /// edge left with a push of 1e-10 kg m and was stretched 2 um once slack, pass after pass, 30
   /// factorizations in each of the step's Newton steps.
   static constexpr int kMostLeaves = 2;
-  std::vector<std::uint8_t> leaves_;  ///< per edge: times it left in this apply() [-]
+  std::vector<std::uint8_t> leaves_;   ///< per edge: times it left in this apply() [-]
+  std::vector<double> released_push_;  ///< see releasedPush() [kg m]
   /// Newton steps of a projection that solve once on a contact-free graph that is no chain
   /// (quick Newton steps): solving every intermediate linearization's complementarity problem
   /// exactly is wasted work, as the next linearization moves the taut set again. Pivoted once per
