@@ -491,6 +491,13 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
     if (pass == kMaxPivotingPasses) break;
     for (std::size_t e = 0; e < edges.size(); ++e) {
       pass_multiplier_[e] = edge_row_[e] >= 0 ? solution_[edge_row_[e]] : 0.0;
+      // A push that would move the edge's ends by less than the slack tolerance counts as none,
+      // as a stretch below it does for a slack edge: an edge at zero force (round-off either
+      // side) would leave and come back in every step.
+      const double weight = inverse_mass[edges.vertex_a[e]] + inverse_mass[edges.vertex_b[e]];
+      if (-pass_multiplier_[e] * weight <= slack_tolerance_ * edges.rest_length[e]) {
+        pass_multiplier_[e] = std::max(pass_multiplier_[e], 0.0);
+      }
     }
     frontier_.beginPass(movable, taut, pass_multiplier_);
     bool changed = false;
