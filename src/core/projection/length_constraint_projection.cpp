@@ -523,9 +523,14 @@ void LengthConstraintProjection::newtonIteration(std::vector<Eigen::Vector3d>& p
                                                  ContactSet* contacts) {
   for (std::size_t e = 0; e < edges.size(); ++e) {
     // With contacts every edge starts taut (pivoting releases the slack ones): guessing a
-    // pulled yarn slack lets the first pass fling it through the obstacles.
-    newton_taut_[e] = candidate_[e] && (multiplier_[e] > 0.0 || residual_[e] > reentry(edges, e) ||
-                                        contacts != nullptr);
+    // pulled yarn slack lets the first pass fling it through the obstacles. An edge the last
+    // Newton step released with push p comes back only past the move that push wanted, the
+    // primal-dual active-set rule m + C / (w_a + w_b) > 0 with m = -p: it was held at its
+    // linearized length, which a turn lengthens (C > 0 at second order), and by the plain C > 0
+    // it came back and left again in every step.
+    newton_taut_[e] =
+        candidate_[e] &&
+        (multiplier_[e] > 0.0 || residual_[e] > newton_.releasedMove(e) || contacts != nullptr);
   }
   iterate_ = position;
   newton_.apply(predicted_, inverse_mass_, edges, gram.incidence(), stretch_state_, candidate_,
@@ -542,16 +547,6 @@ void LengthConstraintProjection::newtonIteration(std::vector<Eigen::Vector3d>& p
       last_move_ = std::max(last_move_, (position[v] - iterate_[v]).norm() / limit_[e]);
     }
   }
-}
-
-double LengthConstraintProjection::reentry(const EdgeSet& edges, std::size_t e) const {
-  // The primal-dual active-set rule m_e + C_e / (w_a + w_b) > 0, with the multiplier m_e = -p
-  // the last Newton step released the edge at: it was held at its linearized length, which a
-  // turn lengthens (C_e > 0 at second order), and by the plain C_e > 0 it came back and left
-  // again in every step. Taken back only where it is stretched past the move its push wanted.
-  const double push = newton_.releasedPush(e);
-  if (push == 0.0) return 0.0;
-  return push * (inverse_mass_[edges.vertex_a[e]] + inverse_mass_[edges.vertex_b[e]]);
 }
 
 void LengthConstraintProjection::fastIteration(std::vector<Eigen::Vector3d>& position,

@@ -474,7 +474,7 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
   stretch_.resize(edges.size());
   frontier_.reset(edges.size());
   leaves_.assign(edges.size(), 0);
-  released_push_.assign(edges.size(), 0.0);
+  released_move_.assign(edges.size(), 0.0);
   // Block principal pivoting, as in the fast iterations: release the taut edges that would
   // push, take in the slack ones that the step would stretch (with the taut frontier), solve
   // again. On a contact-free graph that is no chain, the first kQuickNewtonSteps solve once:
@@ -494,9 +494,9 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
       // A push that would move the edge's ends by less than the slack tolerance counts as none,
       // as a stretch below it does for a slack edge: an edge at zero force (round-off either
       // side) would leave and come back in every step.
-      const double weight = inverse_mass[edges.vertex_a[e]] + inverse_mass[edges.vertex_b[e]];
-      if (-pass_multiplier_[e] * weight <= slack_tolerance_ * edges.rest_length[e]) {
-        pass_multiplier_[e] = std::max(pass_multiplier_[e], 0.0);
+      if (pass_multiplier_[e] < 0.0 &&
+          pushMove(inverse_mass, edges, e) <= slack_tolerance_ * edges.rest_length[e]) {
+        pass_multiplier_[e] = 0.0;
       }
     }
     frontier_.beginPass(movable, taut, pass_multiplier_);
@@ -506,7 +506,7 @@ void StiffNewtonStep::apply(const std::vector<Eigen::Vector3d>& predicted,
       if (taut[e]) {
         if (pass_multiplier_[e] < 0.0 && frontier_.mayLeave(e) && leaves_[e] < kMostLeaves) {
           ++leaves_[e];
-          released_push_[e] = -pass_multiplier_[e];
+          released_move_[e] = pushMove(inverse_mass, edges, e);
           taut[e] = 0;
           frontier_.left(e);
           stretch_state.release(edges, e);

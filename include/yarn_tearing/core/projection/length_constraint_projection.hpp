@@ -164,10 +164,6 @@ class LengthConstraintProjection {
   /// and penetration of `result`.
   void measureIterate(const std::vector<Eigen::Vector3d>& position, const EdgeSet& edges,
                       ContactSet* contacts, ProjectionResult& result);
-  /// Stretch [m] past which edge `e`, released by the last Newton step, is taken back into the
-  /// next one's taut set: the move its released push would have made, w_a + w_b times it; 0
-  /// for an edge not released.
-  double reentry(const EdgeSet& edges, std::size_t e) const;
   /// Every edge end corrected along the final directions.
   void resetCorrectionDirections(std::size_t num_edges);
   /// Puts the edges that flowed at the end of the last projection back on their flow pieces

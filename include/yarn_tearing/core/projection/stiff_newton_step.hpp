@@ -95,11 +95,11 @@ class StiffNewtonStep {
   }
   /// Newton steps taken since beginProjection() [-].
   int steps() const { return newton_steps_; }
-  /// How hard edge `e` would have pushed where the last apply() of this projection released it
-  /// from the taut set: minus its multiplier in the solve that released it [kg m]; 0 where it
-  /// was not released.
-  double releasedPush(std::size_t e) const {
-    return e < released_push_.size() ? released_push_[e] : 0.0;
+  /// How far apart edge `e`'s push would have moved its ends where the last apply() of this
+  /// projection released it from the taut set: (w_a + w_b) p, p minus its multiplier in the
+  /// solve that released it [m]; 0 where it was not released.
+  double releasedMove(std::size_t e) const {
+    return e < released_move_.size() ? released_move_[e] : 0.0;
   }
   /// From now on in this projection, every Newton step pivots until its taut set holds.
   void pivotFully() { full_pivoting_ = true; }
@@ -113,7 +113,7 @@ class StiffNewtonStep {
   /// the projection's, a tenth of its constraint tolerance, as in its fast iterations).
   void beginProjection(double time_step, double slack_tolerance) {
     newton_steps_ = 0;
-    released_push_.clear();
+    released_move_.clear();
     slack_tolerance_ = slack_tolerance;
     refine_ = false;
     full_pivoting_ = false;
@@ -259,6 +259,13 @@ class StiffNewtonStep {
   /// Length minus base length [m] of a slack edge after the solved step, to first order.
   double linearizedStretch(const EdgeSet& edges, const EdgeStretchState& stretch_state,
                            std::size_t e, const std::vector<Eigen::Vector3d>& position) const;
+  /// How far apart edge `e`'s pass multiplier, where it pushes, would move its ends: minus it
+  /// times w_a + w_b [m].
+  double pushMove(const std::vector<double>& inverse_mass, const EdgeSet& edges,
+                  std::size_t e) const {
+    return -pass_multiplier_[e] *
+           (inverse_mass[edges.vertex_a[e]] + inverse_mass[edges.vertex_b[e]]);
+  }
 
   static constexpr int kMaxPivotingPasses = 30;  ///< re-solves after changing the taut set
   /// Times an edge may leave the taut set in one apply() [-]; then it stays taut (its multiplier
@@ -268,7 +275,7 @@ class StiffNewtonStep {
   /// factorizations in each of the step's Newton steps.
   static constexpr int kMostLeaves = 2;
   std::vector<std::uint8_t> leaves_;   ///< per edge: times it left in this apply() [-]
-  std::vector<double> released_push_;  ///< see releasedPush() [kg m]
+  std::vector<double> released_move_;  ///< see releasedMove() [m]
   /// Newton steps of a projection that solve once on a contact-free graph that is no chain
   /// (quick Newton steps): solving every intermediate linearization's complementarity problem
   /// exactly is wasted work, as the next linearization moves the taut set again. Pivoted once per
