@@ -4,7 +4,7 @@ namespace yarn_tearing {
 
 bool SparseLdlt::analyzeWith(const Eigen::SparseMatrix<double>& upper) {
   if (supernodal_) return supernodal_ldlt_.analyzePattern(upper);
-  simplicial_ldlt_.analyzePattern(upper);
+  simplicial_ldlt_.analyzePreordered(upper);
   return simplicial_ldlt_.info() == Eigen::Success;
 }
 

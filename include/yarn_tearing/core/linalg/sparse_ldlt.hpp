@@ -52,6 +52,15 @@ class SparseLdlt {
     double factorizationCost() const {
       return static_cast<double>(this->m_nonZerosPerCol.template cast<double>().squaredNorm());
     }
+    /// analyzePattern() of an upper triangle already in elimination order: the elimination tree
+    /// and column counts straight from it. (Eigen's analyzePattern() tests the ordering type
+    /// against NaturalOrdering<Eigen::Index>, not NaturalOrdering<int>, so it expands the matrix
+    /// to both triangles and copies it through an empty permutation first, the same pattern.)
+    void analyzePreordered(const Eigen::SparseMatrix<double>& upper) {
+      this->m_P.resize(0);
+      this->m_Pinv.resize(0);
+      this->analyzePattern_preordered(upper, true);
+    }
   };
 
   /// Analyses `upper` with the kernel in use.
