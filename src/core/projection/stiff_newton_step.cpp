@@ -203,9 +203,18 @@ bool StiffNewtonStep::solveWithLastFactor(int rows, const std::vector<Eigen::Vec
   return false;
 }
 
+void StiffNewtonStep::skipIdleEntries(int ra, int rb) {
+  // addEdgeRows' entries of an edge with these vertex rows: a 3 x 3 block on each end's
+  // diagonal, two coupling the ends, and each end's three couplings with the edge row, both ways.
+  const int ends = (ra >= 0 ? 1 : 0) + (rb >= 0 ? 1 : 0);
+  const int blocks = ends + (ends == 2 ? 2 : 0);
+  const auto count = static_cast<std::size_t>(9 * blocks + 6 * ends);
+  direct_listed_ = direct_listed_ && generalFactorization().skipDirect(count);
+}
+
 void StiffNewtonStep::addBlock(int row, int col, const Eigen::Matrix3d& block) {
   if (rhs_only_) return;
-  if (direct_ && !condensing_ && !dense_band_) {
+  if (listsDirectly()) {
     // addEntry()'s path chosen once for the nine entries, straight into the analysed pattern (a
     // fabric's Newton systems, whose geometric stiffness blocks are most of their entries).
     PatternCachedLdlt& factorization = generalFactorization();
@@ -281,6 +290,13 @@ bool StiffNewtonStep::addEdgeRows(const EdgeSet& edges, const EdgeStretchState& 
       rhs_[re] = -(length - stretch_state.baseLength()[e]);
     }
     edge_direction_[e] = dir;
+    if (idle && listsDirectly()) {
+      // Its entries are zeros but its diagonal: passed over in the analysed sequence, the
+      // diagonal listed (which checks that the row is where the sequence has it).
+      skipIdleEntries(ra, rb);
+      addEntry(re, re, diagonal);
+      continue;
+    }
     // A taut and an idle row list the same entries in the same order, so that the pattern
     // (PatternCachedLdlt) holds while the taut set changes.
     if (ra >= 0) addBlock(ra, ra, g);

@@ -184,6 +184,12 @@ class StiffNewtonStep {
     if (condensing_) return condensed_factorization_;
     return with_contacts_ ? contact_factorization_ : general_factorization_;
   }
+  /// Whether entries go straight into the analysed pattern of the full (not condensed) system
+  /// in its sequence (PatternCachedLdlt::addDirect): addBlock()'s and skipIdleEntries()' path.
+  bool listsDirectly() const { return !rhs_only_ && direct_ && !condensing_ && !dense_band_; }
+  /// Passes over the entries addEdgeRows() lists for an idle row (all zeros, but its diagonal)
+  /// whose ends have vertex rows `ra` and `rb` (-1 for none) in the analysed sequence.
+  void skipIdleEntries(int ra, int rb);
   /// Adds a 3 x 3 block at (row, col) (addEntry).
   void addBlock(int row, int col, const Eigen::Matrix3d& block);
   /// The half bandwidth [rows] of a chain's system as numbered by numberRows().
