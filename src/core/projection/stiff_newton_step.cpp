@@ -217,14 +217,7 @@ void StiffNewtonStep::addBlock(int row, int col, const Eigen::Matrix3d& block) {
   if (listsDirectly()) {
     // addEntry()'s path chosen once for the nine entries, straight into the analysed pattern (a
     // fabric's Newton systems, whose geometric stiffness blocks are most of their entries).
-    PatternCachedLdlt& factorization = generalFactorization();
-    bool listed = direct_listed_;
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) {
-        listed = listed && factorization.addDirect(row + i, col + j, block(i, j));
-      }
-    }
-    direct_listed_ = listed;
+    direct_listed_ = direct_listed_ && generalFactorization().addDirectBlock(row, col, block);
     return;
   }
   for (int i = 0; i < 3; ++i) {

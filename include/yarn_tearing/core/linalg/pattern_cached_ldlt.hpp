@@ -100,6 +100,24 @@ class PatternCachedLdlt {
     if (slot >= 0) direct_values_[slot] += value;
     return true;
   }
+  /// addDirect() of the nine entries (row + i, col + j) of `block`, row by row; false when the
+  /// sequence does not have them next. A block's first and last entries are checked: entries of
+  /// one 3 x 3 block at (row, col) are listed together, and no other entry of a listing of such
+  /// blocks at the rows of distinct vertices is (row, col) or (row + 2, col + 2) nine entries on.
+  template <typename Block>
+  bool addDirectBlock(int row, int col, const Block& block) {
+    if (cursor_ + 9 > direct_count_ || direct_row_[cursor_] != row || direct_col_[cursor_] != col ||
+        direct_row_[cursor_ + 8] != row + 2 || direct_col_[cursor_ + 8] != col + 2) {
+      return false;
+    }
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        const int slot = direct_slot_[cursor_++];
+        if (slot >= 0) direct_values_[slot] += block(i, j);
+      }
+    }
+    return true;
+  }
   /// Passes over the next `count` entries of the sequence as zeros (an idle row's, with
   /// leaveOutIdleRows()); false when the sequence has fewer left.
   bool skipDirect(std::size_t count) {
