@@ -5,8 +5,6 @@
 // vertex moved up along the yarn by `shift`, every edge taut, one Newton step.
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 #include "test_support.hpp"
 #include "yarn_tearing/core/model/edge_incidence.hpp"
 #include "yarn_tearing/core/projection/edge_stretch_state.hpp"
@@ -41,6 +39,11 @@ struct PushedYarn {
     newton.apply(predicted, inverse_mass, edges, incidence, state, movable, taut, position,
                  multiplier);
   }
+  /// The pushed edge's rest length [m]: hangingYarn()'s length over its edges.
+  static double restLength() {
+    const YarnSpec spec = hangingYarn();
+    return spec.length / static_cast<double>(spec.num_vertices - 1);
+  }
   /// Edge e's length after the step [m].
   double length(std::size_t e) const {
     return (position[scene.edges.vertex_b[e]] - position[scene.edges.vertex_a[e]]).norm();
@@ -61,7 +64,7 @@ struct PushedYarn {
 };
 
 TEST(NewtonPush, AnEdgeWhosePushWouldMoveItsEndsPastTheToleranceIsReleasedWithThatMove) {
-  const double rest = 0.3 / 24.0;
+  const double rest = PushedYarn::restLength();
   const double shift = 1e-3 * rest;  // 10^4 times the slack tolerance
   PushedYarn yarn(shift);
   const EdgeSet& edges = yarn.scene.edges;
@@ -96,7 +99,7 @@ TEST(NewtonPush, AnEdgeWhosePushWouldMoveItsEndsPastTheToleranceIsReleasedWithTh
 }
 
 TEST(NewtonPush, APushBelowTheToleranceCountsAsNoneAndKeepsTheEdgeTautAtItsLength) {
-  const double rest = 0.3 / 24.0;
+  const double rest = PushedYarn::restLength();
   const double shift = 0.1 * kSlackTolerance * rest;
   PushedYarn yarn(shift);
   EXPECT_EQ(yarn.taut[kPushed], 1);

@@ -96,8 +96,7 @@ class PatternCachedLdlt {
     if (cursor_ >= direct_count_ || direct_row_[cursor_] != row || direct_col_[cursor_] != col) {
       return false;
     }
-    const int slot = direct_slot_[cursor_++];
-    if (slot >= 0) direct_values_[slot] += value;
+    addNext(value);
     return true;
   }
   /// addDirect() of the nine entries (row + i, col + j) of `block`, row by row; false when the
@@ -111,10 +110,7 @@ class PatternCachedLdlt {
       return false;
     }
     for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) {
-        const int slot = direct_slot_[cursor_++];
-        if (slot >= 0) direct_values_[slot] += block(i, j);
-      }
+      for (int j = 0; j < 3; ++j) addNext(block(i, j));
     }
     return true;
   }
@@ -156,6 +152,11 @@ class PatternCachedLdlt {
   }
 
  private:
+  /// Adds `value` to the sequence's next entry (where the factorization reads it) and moves on.
+  void addNext(double value) {
+    const int slot = direct_slot_[cursor_++];
+    if (slot >= 0) direct_values_[slot] += value;
+  }
   /// One symbolic analysis with the factorization of its pattern.
   struct Analysis {
     std::uint64_t signature = 0;  ///< sequenceSignature() of its (row, column) sequence
