@@ -36,7 +36,10 @@ TEST_P(LastFactorizationAtStep, AFabricHeldAtItsCornersStepsAsWithFreshFactoriza
 
 // At 1e-2 the released patch's steps part at round-off (their projections converge or are
 // substepped by a hair), with whole and condensed systems as much: no shared trajectory there.
-INSTANTIATE_TEST_SUITE_P(TimeSteps, LastFactorizationAtStep, ::testing::Values(1e-4, 1e-3));
+INSTANTIATE_TEST_SUITE_P(TimeSteps, LastFactorizationAtStep, ::testing::Values(1e-4, 1e-3),
+                         [](const ::testing::TestParamInfo<double>& info) {
+                           return stepName(info.param);
+                         });
 
 TEST(LastFactorization, AHangingFabricIsFactorizedInFewOfItsSteps) {
   // Once it hangs (0.5 s, as BM_FabricHeldAtCorners), most steps take a Newton step whose system

@@ -63,9 +63,11 @@ bool StiffNewtonStep::solve(const std::vector<Eigen::Vector3d>& predicted,
   direct_listed_ = true;
   if (!assemble()) return false;
   if (direct_ && (!direct_listed_ || !generalFactorization().endDirect() || unsymmetric_)) {
+    direct_fallbacks_ += unsymmetric_ ? 0 : 1;
     direct_ = false;
     if (!assemble()) return false;
   }
+  direct_listings_ += direct_ ? 1 : 0;
   if (unsymmetric_) return solveUnsymmetric(rows);
   if (!solveSymmetric(rows)) return false;
   if (start_.direction == nullptr) return true;

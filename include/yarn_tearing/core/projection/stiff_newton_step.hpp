@@ -93,6 +93,14 @@ class StiffNewtonStep {
     return general_factorization_.factorAnalyses() + condensed_factorization_.factorAnalyses() +
            contact_factorization_.factorAnalyses();
   }
+  /// Systems listed straight into their factorization's analysed pattern since this object was
+  /// made [-]: a fabric's systems, whose taut and idle rows list the same entries, once their
+  /// layout was analysed.
+  long directListings() const { return direct_listings_; }
+  /// Systems begun straight into the analysed pattern whose entries did not follow its sequence,
+  /// and were listed again as triplets, since this object was made [-]; sliding friction's
+  /// unsymmetric systems not counted. Zero where addEdgeRows() and skipIdleEntries() agree.
+  long directFallbacks() const { return direct_fallbacks_; }
   /// Newton steps taken since beginProjection() [-].
   int steps() const { return newton_steps_; }
   /// How far apart edge `e`'s push would have moved its ends where the last apply() of this
@@ -369,6 +377,8 @@ class StiffNewtonStep {
   bool force_full_ = false;                      ///< see forceFullSystems()
   bool force_fresh_ = false;                     ///< see forceFreshFactorizations()
   long factorizations_ = 0;                      ///< see factorizations()
+  long direct_listings_ = 0;                     ///< see directListings()
+  long direct_fallbacks_ = 0;                    ///< see directFallbacks()
   std::vector<std::uint8_t> last_eliminated_;    ///< the vertices the last solve would eliminate
   std::vector<int> system_row_;                  ///< per edge: its taut or idle row, else -1
   std::vector<std::uint8_t> plain_;              ///< per edge: no geometric stiffness (condensing)
