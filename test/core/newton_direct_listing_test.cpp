@@ -30,8 +30,8 @@ TEST(NewtonDirectListing, AWeavesSystemsWithIdleRowsListStraightIntoTheAnalysedP
   incidence.build(edges, n);
   std::vector<double> inverse_mass;
   for (std::size_t v = 0; v < n; ++v) inverse_mass.push_back(scene.vertices.inverseMass(v));
-  // Each free vertex moved by up to 2 % of a 12.5 mm edge in a pattern that stretches some edges
-  // and shortens others [m].
+  // Each free vertex moved by up to 2 % of a 12.5 mm edge along each axis, in a pattern that
+  // stretches some edges and shortens others [m].
   std::vector<Eigen::Vector3d> predicted = scene.vertices.position;
   for (std::size_t v = 0; v < n; ++v) {
     if (inverse_mass[v] == 0.0) continue;
