@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "fabric_support.hpp"
-#include "yarn_tearing/core/model/edge_incidence.hpp"
+#include "newton_step_support.hpp"
 #include "yarn_tearing/core/projection/edge_stretch_state.hpp"
 #include "yarn_tearing/core/projection/stiff_newton_step.hpp"
 
@@ -20,20 +20,14 @@ namespace {
 constexpr double kSlackTolerance = 1e-7;
 
 TEST(NewtonDirectListing, AWeavesSystemsWithIdleRowsListStraightIntoTheAnalysedPattern) {
-  SimulationParameters parameters;
-  const Scene scene = buildScene({}, {cottonPatch(6, 6, 0.0625, 0.0625)});
-  EdgeStretchLimits limits;
-  computeStretchLimits(scene, parameters, limits);
-  const EdgeSet& edges = scene.edges;
-  const std::size_t n = scene.vertices.size();
-  EdgeIncidence incidence;
-  incidence.build(edges, n);
-  std::vector<double> inverse_mass;
-  for (std::size_t v = 0; v < n; ++v) inverse_mass.push_back(scene.vertices.inverseMass(v));
+  const NewtonStepInputs weave(buildScene({}, {cottonPatch(6, 6, 0.0625, 0.0625)}));
+  const EdgeSet& edges = weave.scene.edges;
+  const std::vector<double>& inverse_mass = weave.inverse_mass;
+  const double time_step = weave.parameters.time_step;
   // Each free vertex moved by up to 2 % of a 12.5 mm edge along each axis, in a pattern that
   // stretches some edges and shortens others [m].
-  std::vector<Eigen::Vector3d> predicted = scene.vertices.position;
-  for (std::size_t v = 0; v < n; ++v) {
+  std::vector<Eigen::Vector3d> predicted = weave.scene.vertices.position;
+  for (std::size_t v = 0; v < predicted.size(); ++v) {
     if (inverse_mass[v] == 0.0) continue;
     const double phase = static_cast<double>(v);
     predicted[v] += 2.5e-4 * Eigen::Vector3d(std::sin(1.7 * phase), std::cos(2.3 * phase),
@@ -48,15 +42,17 @@ TEST(NewtonDirectListing, AWeavesSystemsWithIdleRowsListStraightIntoTheAnalysedP
   constexpr int kSteps = 3;
   for (int k = 0; k < kSteps; ++k) {
     EdgeStretchState state;
-    state.reset(edges, limits, parameters.time_step);
+    state.reset(edges, weave.limits, time_step);
     std::vector<Eigen::Vector3d> position = predicted;
     std::vector<double> multiplier(edges.size(), 0.0);
-    for (std::size_t e = 0; e < edges.size() && k > 0; ++e) {
-      const bool free = inverse_mass[edges.vertex_a[e]] + inverse_mass[edges.vertex_b[e]] > 0.0;
-      idle += free && taut[e] == 0 ? 1 : 0;
+    if (k > 0) {
+      for (std::size_t e = 0; e < edges.size(); ++e) {
+        const bool free = inverse_mass[edges.vertex_a[e]] + inverse_mass[edges.vertex_b[e]] > 0.0;
+        idle += free && taut[e] == 0 ? 1 : 0;
+      }
     }
-    newton.beginProjection(parameters.time_step, kSlackTolerance);
-    newton.apply(predicted, inverse_mass, edges, incidence, state, movable, taut, position,
+    newton.beginProjection(time_step, kSlackTolerance);
+    newton.apply(predicted, inverse_mass, edges, weave.incidence, state, movable, taut, position,
                  multiplier);
   }
   EXPECT_GT(idle, 0);

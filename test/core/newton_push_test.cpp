@@ -5,8 +5,8 @@
 // vertex moved up along the yarn by `shift`, every edge taut, one Newton step.
 #include <gtest/gtest.h>
 
+#include "newton_step_support.hpp"
 #include "test_support.hpp"
-#include "yarn_tearing/core/model/edge_incidence.hpp"
 #include "yarn_tearing/core/projection/edge_stretch_state.hpp"
 #include "yarn_tearing/core/projection/stiff_newton_step.hpp"
 
@@ -21,14 +21,10 @@ constexpr double kSlackTolerance = 1e-7;
 
 /// One Newton step of hangingYarn() at rest, vertex b of edge kPushed moved up by `shift` [m]
 /// (its edge shorter, the next one longer by as much), every edge taut with multiplier 0.
-struct PushedYarn {
-  explicit PushedYarn(double shift) : scene(buildScene({hangingYarn()})) {
-    computeStretchLimits(scene, parameters, limits);
+struct PushedYarn : NewtonStepInputs {
+  explicit PushedYarn(double shift) : NewtonStepInputs(buildScene({hangingYarn()})) {
     const EdgeSet& edges = scene.edges;
-    const std::size_t n = scene.vertices.size();
-    incidence.build(edges, n);
     state.reset(edges, limits, parameters.time_step);
-    for (std::size_t v = 0; v < n; ++v) inverse_mass.push_back(scene.vertices.inverseMass(v));
     position = scene.vertices.position;
     position[edges.vertex_b[kPushed]].z() += shift;
     predicted = position;
@@ -49,13 +45,8 @@ struct PushedYarn {
     return (position[scene.edges.vertex_b[e]] - position[scene.edges.vertex_a[e]]).norm();
   }
 
-  SimulationParameters parameters;
-  Scene scene;
-  EdgeStretchLimits limits;
-  EdgeIncidence incidence;
   EdgeStretchState state;
   StiffNewtonStep newton;
-  std::vector<double> inverse_mass;
   std::vector<Eigen::Vector3d> predicted;
   std::vector<Eigen::Vector3d> position;
   std::vector<std::uint8_t> movable;
