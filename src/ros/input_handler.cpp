@@ -18,8 +18,6 @@ namespace yarn_tearing {
 namespace ros_layer {
 namespace {
 
-constexpr double kWarnPeriod = 2.0;  ///< [s] between repeated warnings of one reason
-
 /// Throws InputRejected unless `value` [s] is finite and in [0, input_bounds::kMaxDuration].
 void requireDuration(double value, const char* what) {
   if (!std::isfinite(value)) {

@@ -12,11 +12,6 @@
 
 namespace yarn_tearing {
 namespace ros_layer {
-namespace {
-
-constexpr double kWarnPeriod = 2.0;  ///< [s] between repeated warnings of one reason
-
-}  // namespace
 
 ObstacleTracker::ObstacleTracker(const FrameTransformer& frames, std::vector<ObstacleSpec> specs,
                                  Simulator& simulator)

@@ -5,13 +5,10 @@
 
 #include <Eigen/Geometry>
 
+#include "yarn_tearing/ros/warning_throttle.hpp"
+
 namespace yarn_tearing {
 namespace ros_layer {
-namespace {
-
-constexpr double kWarnPeriod = 2.0;  ///< [s] between repeats of a rotation failure warning
-
-}  // namespace
 
 SupportWrenchPublisher::SupportWrenchPublisher(ros::NodeHandle private_nh,
                                                const tf2_ros::Buffer& buffer,

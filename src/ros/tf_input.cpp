@@ -11,18 +11,17 @@ namespace yarn_tearing {
 namespace ros_layer {
 namespace {
 
-constexpr double kWarnPeriod = 2.0;      ///< [s] between repeated warnings of one reason
 constexpr std::size_t kMaxReason = 160;  ///< [characters] of the reason quoted
 constexpr std::uint32_t kTfQueue = 100;  ///< as tf2_ros's listener
-constexpr std::size_t kNumReasons = 2;
+constexpr std::size_t kNumTfReasons = 2;
 constexpr std::size_t kStampOutOfRange = 0;
 constexpr std::size_t kRefusedByTf2 = 1;
-const char* const kReasonNames[kNumReasons] = {"time out of range", "refused by tf2"};
+const char* const kReasonNames[kNumTfReasons] = {"time out of range", "refused by tf2"};
 
 }  // namespace
 
 TfInput::TfInput(const ros::NodeHandle& nh, tf2_ros::Buffer& buffer)
-    : buffer_(buffer), nh_(nh, ""), warnings_(kWarnPeriod, kNumReasons) {
+    : buffer_(buffer), nh_(nh, ""), warnings_(kWarnPeriod, kNumTfReasons) {
   nh_.setCallbackQueue(&queue_);
   tf_sub_ = nh_.subscribe<tf2_msgs::TFMessage>(
       "/tf", kTfQueue,

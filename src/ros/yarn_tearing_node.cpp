@@ -22,7 +22,6 @@ namespace yarn_tearing {
 namespace ros_layer {
 namespace {
 
-constexpr double kWarnPeriod = 2.0;     ///< [s] between repeats of one refusal warning
 constexpr double kCyclePeriod = 0.005;  ///< [s] wall: longest sleep between stepping cycles
 constexpr double kStepBudget = 0.02;    ///< [s] wall: longest stepping before serving callbacks
 /// [s] wall: longest the loop waits for a newer sample of a followed frame that it would otherwise

@@ -163,7 +163,7 @@ struct EdgeCase {
   double dt;     ///< [s]
 };
 
-std::string caseName(const ::testing::TestParamInfo<EdgeCase>& info) {
+std::string boxCaseName(const ::testing::TestParamInfo<EdgeCase>& info) {
   const EdgeCase& c = info.param;
   return "ratio" + std::to_string(std::lround(100 * c.ratio)) + "_chord" +
          std::to_string(std::lround(1e3 * c.chord)) + "mm_" + stepName(c.dt);
@@ -206,14 +206,14 @@ INSTANTIATE_TEST_SUITE_P(RatiosChordsSteps, FrictionlessBoxEdge,
                                            EdgeCase{1.3, 2e-3, 1e-2}, EdgeCase{2.2, 2e-3, 1e-2},
                                            EdgeCase{1.05, 1e-3, 1e-4}, EdgeCase{1.3, 1e-3, 1e-4},
                                            EdgeCase{2.2, 1e-3, 1e-4}),
-                         caseName);
+                         boxCaseName);
 
-struct FrictionCase {
+struct EdgeFrictionCase {
   double chord;  ///< segment length [m]
   double dt;     ///< [s]
 };
 
-class BoxEdgeWithFriction : public ::testing::TestWithParam<FrictionCase> {};
+class BoxEdgeWithFriction : public ::testing::TestWithParam<EdgeFrictionCase> {};
 
 constexpr double kFriction = 0.3;  ///< mu: e^(mu theta) = 1.369 over the 60-degree ridge
 
@@ -221,7 +221,7 @@ constexpr double kFriction = 0.3;  ///< mu: e^(mu theta) = 1.369 over the 60-deg
 // tails' elastic stretch under the changed load (0.15 N on 50 mm of EA = 157 N: 48 um) and its
 // ringing allow.
 TEST_P(BoxEdgeWithFriction, HoldsBelowTheCapstanRatioEachSideCarryingItsWeight) {
-  const FrictionCase c = GetParam();
+  const EdgeFrictionCase c = GetParam();
   const double ratio = 1.3;
   Ridge r = ridge(c.chord, c.dt, ratio);
   const LoadedRun run = load(r, kFriction, ratio, c.dt);
@@ -237,7 +237,7 @@ TEST_P(BoxEdgeWithFriction, HoldsBelowTheCapstanRatioEachSideCarryingItsWeight) 
 // and at dt <= 1e-3 the tails' tension ratio is e^(mu theta) within 3 % (the capstan tests'
 // tolerance; at dt = 1e-2 the ends' ringing is not averaged out, as above).
 TEST_P(BoxEdgeWithFriction, SlidesAboveTheCapstanRatio) {
-  const FrictionCase c = GetParam();
+  const EdgeFrictionCase c = GetParam();
   const double ratio = 1.45;
   Ridge r = ridge(c.chord, c.dt, ratio);
   const LoadedRun run = load(r, kFriction, ratio, c.dt);
@@ -252,16 +252,17 @@ TEST_P(BoxEdgeWithFriction, SlidesAboveTheCapstanRatio) {
   }
 }
 
-std::string frictionCaseName(const ::testing::TestParamInfo<FrictionCase>& info) {
+std::string edgeFrictionCaseName(const ::testing::TestParamInfo<EdgeFrictionCase>& info) {
   return "chord" + std::to_string(std::lround(1e3 * info.param.chord)) + "mm_" +
          stepName(info.param.dt);
 }
 
-INSTANTIATE_TEST_SUITE_P(ChordsSteps, BoxEdgeWithFriction,
-                         ::testing::Values(FrictionCase{1e-3, 1e-2}, FrictionCase{2e-3, 1e-2},
-                                           FrictionCase{1e-3, 1e-3}, FrictionCase{2e-3, 1e-3},
-                                           FrictionCase{1e-3, 1e-4}, FrictionCase{2e-3, 1e-4}),
-                         frictionCaseName);
+INSTANTIATE_TEST_SUITE_P(
+    ChordsSteps, BoxEdgeWithFriction,
+    ::testing::Values(EdgeFrictionCase{1e-3, 1e-2}, EdgeFrictionCase{2e-3, 1e-2},
+                      EdgeFrictionCase{1e-3, 1e-3}, EdgeFrictionCase{2e-3, 1e-3},
+                      EdgeFrictionCase{1e-3, 1e-4}, EdgeFrictionCase{2e-3, 1e-4}),
+    edgeFrictionCaseName);
 
 }  // namespace
 }  // namespace yarn_tearing::test

@@ -13,11 +13,10 @@
 namespace yarn_tearing::test {
 namespace {
 
-constexpr double kPostRadius = 5.0e-3;        ///< [m]
-constexpr double kLoadMass = 0.051;           ///< m1 [kg]
-constexpr double kT1 = kLoadMass * kGravity;  ///< the weight [N] (0.50 N)
-constexpr double kOverpull = 1.03;            ///< T2 / (T1 e^(mu theta)) [-]
-constexpr double kSlideTime = 0.1;            ///< [s]
+constexpr double kLoadMass = 0.051;               ///< m1 [kg]
+constexpr double kWeight = kLoadMass * kGravity;  ///< the weight [N] (0.50 N)
+constexpr double kOverpull = 1.03;                ///< T2 / (T1 e^(mu theta)) [-]
+constexpr double kSlideTime = 0.1;                ///< [s]
 
 struct SlideCase {
   double wrap_angle;  ///< [rad]
@@ -38,7 +37,7 @@ double eulerTravel(double a, double t, double dt) { return 0.5 * a * t * (t + dt
 
 /// The weight's acceleration [m/s^2] when the wrap's friction lets end A's pull `t2` [N] through
 /// as t2 / ratio on the weight's side.
-double loadAcceleration(double t2, double ratio) { return (t2 / ratio - kT1) / kLoadMass; }
+double loadAcceleration(double t2, double ratio) { return (t2 / ratio - kWeight) / kLoadMass; }
 
 class CapstanSlide : public ::testing::TestWithParam<SlideCase> {};
 
@@ -59,7 +58,7 @@ TEST_P(CapstanSlide, WeightRisesAsTheKineticCapstanLawSays) {
   // step, doc/method.md, "Friction": at dt = 1e-2 the whole wrap slipped 2.7 chords in that Newton
   // step when friction came with the pull, never recovered; friction_at_pull checks they are kept.)
   sim.setKinematicTarget(load, sim.scene().vertices.position[load]);
-  sim.setAppliedForce(0, kT1 * wrap.tail_direction_a);
+  sim.setAppliedForce(0, kWeight * wrap.tail_direction_a);
   for (const double mu : {0.0, c.friction_at_pull ? 0.0 : c.mu}) {
     sim.setObstacles({postAlongY(kPostRadius, mu)});
     for (int i = 0; i < std::lround(0.01 / c.dt); ++i) {
@@ -70,10 +69,10 @@ TEST_P(CapstanSlide, WeightRisesAsTheKineticCapstanLawSays) {
   if (c.friction_at_pull) sim.setObstacles({postAlongY(kPostRadius, c.mu)});
   sim.releaseVertex(load);
   sim.setVelocity(load, Eigen::Vector3d::Zero());
-  sim.setAppliedForce(load, kT1 * wrap.tail_direction_b);
+  sim.setAppliedForce(load, kWeight * wrap.tail_direction_b);
   // End A pulled 3 % past the capstan law.
   const double law = std::exp(c.mu * c.wrap_angle);
-  const double t2 = kOverpull * law * kT1;  // [N]
+  const double t2 = kOverpull * law * kWeight;  // [N]
   sim.setAppliedForce(0, t2 * wrap.tail_direction_a);
   const Eigen::Vector3d start = sim.scene().vertices.position[load];
   const int steps = static_cast<int>(std::lround(kSlideTime / c.dt));

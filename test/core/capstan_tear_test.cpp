@@ -21,9 +21,8 @@ class CapstanTear : public ::testing::TestWithParam<TearCase> {};
 
 TEST_P(CapstanTear, BreaksOnThePulledSideAtItsBreakingForce) {
   const TearCase c = GetParam();
-  constexpr double kPostRadius = 5.0e-3;  // [m]
-  constexpr double kMu = 0.3;             // [-]
-  const YarnSpec spec = hangingYarn();    // cotton-like: sigma_b = 486 MPa, r = 0.1 mm
+  constexpr double kMu = 0.3;           // [-]
+  const YarnSpec spec = hangingYarn();  // cotton-like: sigma_b = 486 MPa, r = 0.1 mm
   const double breaking_force = 4.86e8 * kPi * spec.radius * spec.radius;  // 15.27 N
   // T1 such that the yarn tears before it slides: F_b / T1 = 1.43 < e^(0.3 pi / 2) = 1.60.
   const double t1 = 0.7 * breaking_force;  // [N]

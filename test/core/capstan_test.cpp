@@ -14,8 +14,7 @@
 namespace yarn_tearing::test {
 namespace {
 
-constexpr double kPostRadius = 5.0e-3;  ///< [m]
-constexpr double kT1 = 0.5;             ///< [N]
+constexpr double kT1 = 0.5;  ///< [N]
 
 struct WrapCase {
   double wrap_angle;      ///< [rad]

@@ -16,9 +16,6 @@
 namespace yarn_tearing::test {
 namespace {
 
-constexpr double kRadius = 1.0e-4;                 // [m]
-constexpr double kArea = kPi * kRadius * kRadius;  // [m^2]
-
 /// A straight yarn along +x from the origin, `num_vertices` vertices, 0.3 m long.
 YarnSpec spanAlongX(int num_vertices) {
   YarnSpec spec = hangingYarn();
@@ -58,7 +55,7 @@ SimulationParameters heldParameters(double dt, bool gravity) {
   return p;
 }
 
-std::string caseName(double dt, bool gravity) {
+std::string spanCaseName(double dt, bool gravity) {
   return "dt " + std::to_string(dt) + (gravity ? ", gravity" : ", no gravity");
 }
 
@@ -80,16 +77,18 @@ TEST_P(HeldYarn, PinnedSpanCarriesTheTensionOfItsStretch) {
     for (std::size_t e = 0; e < sim.scene().edges.size(); ++e) {
       const double estimate = sim.scene().edges.tension[e];
       const double geometric = stretchTension(sim, e);
-      ASSERT_GE(estimate, 0.0) << caseName(dt, gravity) << ", edge " << e << ", t " << sim.time();
+      ASSERT_GE(estimate, 0.0) << spanCaseName(dt, gravity) << ", edge " << e << ", t "
+                               << sim.time();
       worst = std::max(worst, std::abs(estimate - geometric) / geometric);
       ASSERT_NEAR(estimate, geometric, 0.02 * geometric)
-          << caseName(dt, gravity) << ", edge " << e << ", t " << sim.time();
+          << spanCaseName(dt, gravity) << ", edge " << e << ", t " << sim.time();
     }
-    ASSERT_NEAR(sim.supportForce(0).x(), pretension, 0.02 * pretension) << caseName(dt, gravity);
+    ASSERT_NEAR(sim.supportForce(0).x(), pretension, 0.02 * pretension)
+        << spanCaseName(dt, gravity);
     ASSERT_NEAR(sim.supportForce(last).x(), -pretension, 0.02 * pretension)
-        << caseName(dt, gravity);
+        << spanCaseName(dt, gravity);
   }
-  std::cout << caseName(dt, gravity) << ": largest relative error " << worst << "\n";
+  std::cout << spanCaseName(dt, gravity) << ": largest relative error " << worst << "\n";
 }
 
 // A yarn pinned at one end, loaded at its free end through a 50 g weight by a force F along +x
@@ -119,7 +118,7 @@ TEST_P(HeldYarn, GraspPulledSidewaysBalancesATriangleOfForces) {
     sim.setKinematicTarget(middle, grasp_start + Eigen::Vector3d(0.0, h * s * s * (3 - 2 * s), 0));
     sim.step();
     ASSERT_TRUE(sim.lastHealth().projection_converged)
-        << caseName(dt, gravity) << ", t " << sim.time() << ", violation "
+        << spanCaseName(dt, gravity) << ", t " << sim.time() << ", violation "
         << sim.lastHealth().max_constraint_violation << ", mismatch "
         << sim.lastHealth().force_mismatch << ", iterations "
         << sim.lastHealth().projection_iterations;
@@ -127,13 +126,13 @@ TEST_P(HeldYarn, GraspPulledSidewaysBalancesATriangleOfForces) {
   const Eigen::Vector3d g = sim.scene().vertices.position[middle];
   const double near_rest = 0.5 * spec.length;
   const double near_tension =
-      spec.material.curve.youngsModulus() * kArea * (g.norm() - near_rest) / near_rest;
+      spec.material.curve.youngsModulus() * kYarnArea * (g.norm() - near_rest) / near_rest;
   ASSERT_GT(near_tension, 1.0);  // the near side is taut and elastic (below 3.5 N at yield)
   const Scene& s = sim.scene();
   for (std::size_t e = 0; e < s.edges.size(); ++e) {
     const double expected = e < middle ? near_tension : force;
     EXPECT_NEAR(s.edges.tension[e], expected, 0.02 * expected)
-        << caseName(dt, gravity) << ", edge " << e;
+        << spanCaseName(dt, gravity) << ", edge " << e;
   }
   // The far side with its weight hangs from the gripper: the gripper feels the near side's pull,
   // the load applied at the end and the far side's weight.
@@ -142,7 +141,7 @@ TEST_P(HeldYarn, GraspPulledSidewaysBalancesATriangleOfForces) {
   const Eigen::Vector3d triangle =
       near_tension * (-g / g.norm()) + s.vertices.applied_force[end] + far_weight;
   EXPECT_LT((sim.supportForce(middle) - triangle).norm(), 0.02 * triangle.norm())
-      << caseName(dt, gravity) << ": gripper feels " << sim.supportForce(middle).transpose()
+      << spanCaseName(dt, gravity) << ": gripper feels " << sim.supportForce(middle).transpose()
       << ", triangle " << triangle.transpose();
 }
 
@@ -215,23 +214,23 @@ TEST_P(GrippersDrawApart, TearsOnceAtTheBreakingElongationAndForce) {
       const double now = plasticStrainAtStrain(curve, geometric_strain);
       const double most = plasticStrainAtStrain(curve, largest_strain[e]);
       ASSERT_GE(s.edges.plastic_strain[e], now - slack)
-          << "N " << num_vertices << ", " << caseName(dt, gravity) << ", edge " << e << ", t "
+          << "N " << num_vertices << ", " << spanCaseName(dt, gravity) << ", edge " << e << ", t "
           << sim.time();
       ASSERT_LE(s.edges.plastic_strain[e], most + slack)
-          << "N " << num_vertices << ", " << caseName(dt, gravity) << ", edge " << e << ", t "
+          << "N " << num_vertices << ", " << spanCaseName(dt, gravity) << ", edge " << e << ", t "
           << sim.time();
     }
   }
   // One tear: the pieces stay intact while the tear's unloading wave crosses them (Tearing),
   // though every edge of this yarn of uniform strength was at its breaking point.
-  ASSERT_EQ(events.size(), 1u) << "N " << num_vertices << ", " << caseName(dt, gravity);
+  ASSERT_EQ(events.size(), 1u) << "N " << num_vertices << ", " << spanCaseName(dt, gravity);
   const double elongation = 2.0 * speed * events[0].time;
   const double breaking_elongation = curve.breakingStrain() * spec.length;
   EXPECT_NEAR(elongation, breaking_elongation, 0.02 * breaking_elongation)
-      << "N " << num_vertices << ", " << caseName(dt, gravity);
-  const double breaking_force = curve.breakingStress() * kArea;
+      << "N " << num_vertices << ", " << spanCaseName(dt, gravity);
+  const double breaking_force = curve.breakingStress() * kYarnArea;
   EXPECT_NEAR(events[0].tension, breaking_force, 0.02 * breaking_force)
-      << "N " << num_vertices << ", " << caseName(dt, gravity);
+      << "N " << num_vertices << ", " << spanCaseName(dt, gravity);
 }
 
 INSTANTIATE_TEST_SUITE_P(VerticesStepsAndGravity, GrippersDrawApart,

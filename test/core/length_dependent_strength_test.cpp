@@ -16,9 +16,6 @@
 namespace yarn_tearing::test {
 namespace {
 
-constexpr double kRadius = 1.0e-4;  ///< [m]
-constexpr double kArea = kPi * kRadius * kRadius;
-
 /// Sample mean and coefficient of variation (sample standard deviation over mean).
 struct Sample {
   double mean = 0.0;
@@ -52,7 +49,7 @@ std::vector<double> yarnStrengths(YarnSpec spec, unsigned long long first_seed, 
     spec.strength_scatter.seed = first_seed + static_cast<unsigned long long>(i);
     const Scene scene = buildScene({spec});
     const auto& f = scene.edges.strength_factor;
-    strengths.push_back(spec.material.curve.breakingStress() * kArea *
+    strengths.push_back(spec.material.curve.breakingStress() * kYarnArea *
                         *std::min_element(f.begin(), f.end()));
   }
   return strengths;
@@ -88,7 +85,7 @@ TEST(LengthDependentStrength, AYarnOfTheGaugeLengthHasTheMaterialsStrengthAndThe
   // CV; the bounds 2 % and 15 % are over ten of them.
   YarnSpec spec = scatteredYarn(0.5, 25, 0.0, 0.1);
   ASSERT_EQ(spec.strength_scatter.gauge_length, 0.5);
-  const double nominal = spec.material.curve.breakingStress() * kArea;
+  const double nominal = spec.material.curve.breakingStress() * kYarnArea;
   for (const int vertices : {2, 25, 201}) {
     spec.num_vertices = vertices;
     const Sample s = describe(yarnStrengths(spec, 1, kSeeds));
@@ -137,7 +134,7 @@ TEST(LengthDependentStrength, SimulatedPullsOfGaugeLengthSpecimensGiveTheMateria
   for (int seed = 1; seed <= 400; ++seed) {
     spec.strength_scatter.seed = static_cast<unsigned long long>(seed);
     const double strength = weakestEdgeStrength(spec);
-    const double force = strength * kArea;
+    const double force = strength * kYarnArea;
     const double strain = spec.material.curve.strainAtStress(strength);
     const TensilePullResult pull = pullSpecimen(spec, settings);
     ASSERT_TRUE(pull.torn) << "seed " << seed;
@@ -148,7 +145,7 @@ TEST(LengthDependentStrength, SimulatedPullsOfGaugeLengthSpecimensGiveTheMateria
     EXPECT_NEAR(pull.trace[pull.trace.size() - 2].force, force, 0.01 * force) << "seed " << seed;
     forces.push_back(pull.breaking_force);
   }
-  const double nominal = spec.material.curve.breakingStress() * kArea;
+  const double nominal = spec.material.curve.breakingStress() * kYarnArea;
   const Sample s = describe(forces);
   EXPECT_NEAR(s.mean, nominal, 0.02 * nominal);
   EXPECT_NEAR(s.cv, 0.1, 0.015);

@@ -16,9 +16,6 @@
 namespace yarn_tearing::test {
 namespace {
 
-/// The stretch per rest length past which pivoting takes an edge [-].
-constexpr double kSlackTolerance = 1e-7;
-
 TEST(NewtonDirectListing, AWeavesSystemsWithIdleRowsListStraightIntoTheAnalysedPattern) {
   const NewtonStepInputs weave(buildScene({}, {cottonPatch(6, 6, 0.0625, 0.0625)}));
   const EdgeSet& edges = weave.scene.edges;

@@ -15,9 +15,6 @@ namespace {
 
 /// The yarn's edge that the moved vertex ends: its vertex b moves toward its vertex a.
 constexpr std::size_t kPushed = 10;
-/// The stretch per rest length past which pivoting takes an edge in [-], and the push's move per
-/// rest length below which it counts as none.
-constexpr double kSlackTolerance = 1e-7;
 
 /// One Newton step of hangingYarn() at rest, vertex b of edge kPushed moved up by `shift` [m]
 /// (its edge shorter, the next one longer by as much), every edge taut with multiplier 0.

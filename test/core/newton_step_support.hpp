@@ -9,6 +9,10 @@
 
 namespace yarn_tearing::test {
 
+/// The stretch per rest length past which pivoting takes an edge in [-], and the push's move per
+/// rest length below which it counts as none.
+constexpr double kSlackTolerance = 1e-7;
+
 /// What StiffNewtonStep::apply() reads of a scene at the default parameters, for tests that
 /// drive Newton steps directly: its stretch limits, edge incidence and inverse masses.
 struct NewtonStepInputs {

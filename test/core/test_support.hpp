@@ -44,12 +44,16 @@ inline Material weakLike() {
   return fibre("weak_like", {{0.0, 0.0}, {0.01, 4.0e7}, {0.05, 1.6e8}});
 }
 
+/// The radius of hangingYarn()'s yarn [m] and its cross-section [m^2].
+constexpr double kYarnRadius = 1.0e-4;
+constexpr double kYarnArea = kPi * kYarnRadius * kYarnRadius;
+
 /// 0.3 m, 25 vertices, r = 0.1 mm, hanging along -z from the origin, vertex 0 pinned.
 inline YarnSpec hangingYarn(const Material& material = cottonLike()) {
   YarnSpec spec;
   spec.name = "yarn";
   spec.material = material;
-  spec.radius = 1.0e-4;
+  spec.radius = kYarnRadius;
   spec.length = 0.3;
   spec.num_vertices = 25;
   spec.pinned = {0};

@@ -7,6 +7,9 @@
 
 namespace yarn_tearing::test {
 
+/// The radius of the capstan tests' post [m].
+constexpr double kPostRadius = 5.0e-3;
+
 /// A yarn wrapped round a post along y through the origin: straight tails on both sides and,
 /// between them, chords tangent to the post that turn by `wrap_angle` [rad] in all. Vertex 0 is
 /// end A (the tail on the left), the last vertex end B; `tail_direction_a` and

@@ -24,7 +24,7 @@ struct YankCase {
   int recoil_substeps;  ///< [-]
 };
 
-std::string caseName(const testing::TestParamInfo<YankCase>& info) {
+std::string yankCaseName(const testing::TestParamInfo<YankCase>& info) {
   return stepName(info.param.dt) + "_recoil" + std::to_string(info.param.recoil_substeps);
 }
 
@@ -131,7 +131,7 @@ INSTANTIATE_TEST_SUITE_P(Steps, Yank,
                                          YankCase{1.0e-4, 384}, YankCase{7.0e-5, 96},
                                          YankCase{1.0e-3, 96}, YankCase{5.0e-3, 96},
                                          YankCase{1.0e-2, 96}),
-                         caseName);
+                         yankCaseName);
 
 }  // namespace
 }  // namespace yarn_tearing::test

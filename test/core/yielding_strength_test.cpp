@@ -74,7 +74,7 @@ std::string stepOrFrameName(double dt) {
   return dt > 0.015 ? std::string("dt1over60") : stepName(dt);
 }
 
-std::string caseName(const ::testing::TestParamInfo<Case>& info) {
+std::string pullCaseName(const ::testing::TestParamInfo<Case>& info) {
   const auto& [name, pull, dt] = info.param;
   return name + (pull == Pull::kForceRamp ? "_force_" : "_drawn_") + stepOrFrameName(dt);
 }
@@ -130,7 +130,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Combine(::testing::Values("cotton", "polyester", "nylon66", "wool"),
                        ::testing::Values(Pull::kForceRamp, Pull::kDrawnEnd),
                        ::testing::Values(1.0e-4, 1.0e-3, 5.0e-3, 1.0e-2, 1.0 / 60.0)),
-    caseName);
+    pullCaseName);
 
 }  // namespace
 }  // namespace yarn_tearing::test

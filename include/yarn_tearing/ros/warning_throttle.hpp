@@ -7,6 +7,9 @@
 namespace yarn_tearing {
 namespace ros_layer {
 
+/// The period of the node's throttled warnings [s]: at most one report per reason in it.
+constexpr double kWarnPeriod = 2.0;
+
 /// Throttles warnings per reason from a fixed set of `num_keys` (e.g. topic x RefusalReason):
 /// the first of each key is reported at once, then at most one per period, with the count of
 /// the ones held back in between. Memory is fixed however many different messages arrive

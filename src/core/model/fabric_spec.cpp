@@ -7,7 +7,7 @@
 namespace yarn_tearing {
 namespace {
 
-void require(bool ok, const std::string& fabric, const std::string& what) {
+void requireFabric(bool ok, const std::string& fabric, const std::string& what) {
   if (!ok) throw std::invalid_argument("fabric '" + fabric + "': " + what);
 }
 
@@ -24,7 +24,7 @@ void validateYarn(const YarnSpec& yarn, const std::string& fabric, const char* f
   try {
     checked.validate();
   } catch (const std::invalid_argument& e) {
-    require(false, fabric, std::string(family) + ": " + e.what());
+    requireFabric(false, fabric, std::string(family) + ": " + e.what());
   }
 }
 
@@ -43,42 +43,45 @@ int FabricSpec::yarnCount(FabricFamily family) const {
 }
 
 void FabricSpec::validate() const {
-  require(!name.empty(), name, "name must not be empty");
-  require(std::isfinite(warp_length) && warp_length > 0.0, name, "warp_length must be > 0 [m]");
-  require(std::isfinite(weft_length) && weft_length > 0.0, name, "weft_length must be > 0 [m]");
-  require(ends >= 2, name, "ends must be >= 2, got " + std::to_string(ends));
-  require(picks >= 2, name, "picks must be >= 2, got " + std::to_string(picks));
-  require(origin.allFinite(), name, "origin must be finite [m]");
-  require(warp_direction.allFinite() && warp_direction.norm() > 0.0, name,
-          "warp_direction must be a finite non-zero vector");
-  require(weft_direction.allFinite() && weft_direction.norm() > 0.0, name,
-          "weft_direction must be a finite non-zero vector");
+  requireFabric(!name.empty(), name, "name must not be empty");
+  requireFabric(std::isfinite(warp_length) && warp_length > 0.0, name,
+                "warp_length must be > 0 [m]");
+  requireFabric(std::isfinite(weft_length) && weft_length > 0.0, name,
+                "weft_length must be > 0 [m]");
+  requireFabric(ends >= 2, name, "ends must be >= 2, got " + std::to_string(ends));
+  requireFabric(picks >= 2, name, "picks must be >= 2, got " + std::to_string(picks));
+  requireFabric(origin.allFinite(), name, "origin must be finite [m]");
+  requireFabric(warp_direction.allFinite() && warp_direction.norm() > 0.0, name,
+                "warp_direction must be a finite non-zero vector");
+  requireFabric(weft_direction.allFinite() && weft_direction.norm() > 0.0, name,
+                "weft_direction must be a finite non-zero vector");
   const double cosine = warp_direction.normalized().dot(weft_direction.normalized());
-  require(std::abs(cosine) < 0.99, name, "warp_direction and weft_direction must not be parallel");
+  requireFabric(std::abs(cosine) < 0.99, name,
+                "warp_direction and weft_direction must not be parallel");
   validateYarn(warp, name, "warp");
   validateYarn(weft, name, "weft");
-  require(std::isfinite(warp_crimp) && warp_crimp >= 0.0 && warp_crimp <= 1.0, name,
-          "warp_crimp must be in [0, 1]");
-  require(std::isfinite(weft_crimp) && weft_crimp >= 0.0 && weft_crimp <= 1.0, name,
-          "weft_crimp must be in [0, 1]");
-  require(std::isfinite(shear_rigidity) && shear_rigidity >= 0.0, name,
-          "shear_rigidity must be >= 0 [N/m]");
+  requireFabric(std::isfinite(warp_crimp) && warp_crimp >= 0.0 && warp_crimp <= 1.0, name,
+                "warp_crimp must be in [0, 1]");
+  requireFabric(std::isfinite(weft_crimp) && weft_crimp >= 0.0 && weft_crimp <= 1.0, name,
+                "weft_crimp must be in [0, 1]");
+  requireFabric(std::isfinite(shear_rigidity) && shear_rigidity >= 0.0, name,
+                "shear_rigidity must be >= 0 [N/m]");
   for (const FabricVertexIndex& p : pinned) {
-    require(p.row >= -picks && p.row < picks && p.column >= -ends && p.column < ends, name,
-            "pinned vertex (" + std::to_string(p.row) + ", " + std::to_string(p.column) +
-                ") out of range: row in " + range(picks) + ", column in " + range(ends));
+    requireFabric(p.row >= -picks && p.row < picks && p.column >= -ends && p.column < ends, name,
+                  "pinned vertex (" + std::to_string(p.row) + ", " + std::to_string(p.column) +
+                      ") out of range: row in " + range(picks) + ", column in " + range(ends));
   }
   for (const FabricSlit& slit : slits) {
     const int yarns = yarnCount(slit.family);
     const int segments = segmentsPerYarn(slit.family);
-    require(slit.first_yarn >= 0 && slit.first_yarn <= slit.last_yarn && slit.last_yarn < yarns,
-            name,
-            std::string("slit across ") + familyName(slit.family) + " yarns " +
-                std::to_string(slit.first_yarn) + ".." + std::to_string(slit.last_yarn) +
-                ": need 0 <= first_yarn <= last_yarn < " + std::to_string(yarns));
-    require(slit.segment >= 0 && slit.segment < segments, name,
-            "slit segment " + std::to_string(slit.segment) + " out of range [0, " +
-                std::to_string(segments - 1) + "]");
+    requireFabric(
+        slit.first_yarn >= 0 && slit.first_yarn <= slit.last_yarn && slit.last_yarn < yarns, name,
+        std::string("slit across ") + familyName(slit.family) + " yarns " +
+            std::to_string(slit.first_yarn) + ".." + std::to_string(slit.last_yarn) +
+            ": need 0 <= first_yarn <= last_yarn < " + std::to_string(yarns));
+    requireFabric(slit.segment >= 0 && slit.segment < segments, name,
+                  "slit segment " + std::to_string(slit.segment) + " out of range [0, " +
+                      std::to_string(segments - 1) + "]");
   }
 }
 

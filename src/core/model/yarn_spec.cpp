@@ -9,55 +9,56 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-void require(bool ok, const std::string& yarn, const std::string& what) {
+void requireYarn(bool ok, const std::string& yarn, const std::string& what) {
   if (!ok) throw std::invalid_argument("yarn '" + yarn + "': " + what);
 }
 
 }  // namespace
 
 void YarnSpec::validate() const {
-  require(!name.empty(), name, "name must not be empty");
+  requireYarn(!name.empty(), name, "name must not be empty");
   try {
     material.validate();
   } catch (const std::invalid_argument& e) {
-    require(false, name, e.what());
+    requireYarn(false, name, e.what());
   }
   if (tex > 0.0) {
-    require(std::isfinite(tex), name, "tex must be finite and > 0 [g/km]");
-    require(packing_fraction > 0.0 && packing_fraction <= 1.0, name,
-            "packing_fraction must be in (0, 1], got " + std::to_string(packing_fraction));
+    requireYarn(std::isfinite(tex), name, "tex must be finite and > 0 [g/km]");
+    requireYarn(packing_fraction > 0.0 && packing_fraction <= 1.0, name,
+                "packing_fraction must be in (0, 1], got " + std::to_string(packing_fraction));
   } else {
-    require(tex == 0.0, name, "tex must be >= 0 [g/km], got " + std::to_string(tex));
-    require(std::isfinite(radius) && radius > 0.0, name,
-            "radius must be > 0 [m], got " + std::to_string(radius));
+    requireYarn(tex == 0.0, name, "tex must be >= 0 [g/km], got " + std::to_string(tex));
+    requireYarn(std::isfinite(radius) && radius > 0.0, name,
+                "radius must be > 0 [m], got " + std::to_string(radius));
   }
-  require(std::isfinite(length) && length > 0.0, name,
-          "length must be > 0 [m], got " + std::to_string(length));
-  require(num_vertices >= 2, name,
-          "num_vertices must be >= 2, got " + std::to_string(num_vertices));
-  require(start.allFinite(), name, "start must be finite [m]");
-  require(direction.allFinite() && direction.norm() > 0.0, name,
-          "direction must be a finite non-zero vector");
+  requireYarn(std::isfinite(length) && length > 0.0, name,
+              "length must be > 0 [m], got " + std::to_string(length));
+  requireYarn(num_vertices >= 2, name,
+              "num_vertices must be >= 2, got " + std::to_string(num_vertices));
+  requireYarn(start.allFinite(), name, "start must be finite [m]");
+  requireYarn(direction.allFinite() && direction.norm() > 0.0, name,
+              "direction must be a finite non-zero vector");
   for (int p : pinned) {
-    require(p >= -num_vertices && p < num_vertices, name,
-            "pinned index " + std::to_string(p) + " out of range [" +
-                std::to_string(-num_vertices) + ", " + std::to_string(num_vertices - 1) + "]");
+    requireYarn(p >= -num_vertices && p < num_vertices, name,
+                "pinned index " + std::to_string(p) + " out of range [" +
+                    std::to_string(-num_vertices) + ", " + std::to_string(num_vertices - 1) + "]");
   }
-  require(std::isfinite(end_mass) && end_mass >= 0.0, name,
-          "end_mass must be >= 0 [kg], got " + std::to_string(end_mass));
-  require(
+  requireYarn(std::isfinite(end_mass) && end_mass >= 0.0, name,
+              "end_mass must be >= 0 [kg], got " + std::to_string(end_mass));
+  requireYarn(
       std::isfinite(strength_scatter.weibull_modulus) && strength_scatter.weibull_modulus >= 0.0,
       name, "weibull_modulus must be >= 0 (0 = no scatter)");
   const double cv = strength_scatter.coefficient_of_variation;
-  require(
+  requireYarn(
       std::isfinite(cv) && cv >= 0.0 && cv <= 1.0, name,
       "strength coefficient of variation must be in [0, 1] (0 = none), got " + std::to_string(cv));
-  require(cv == 0.0 || strength_scatter.weibull_modulus == 0.0, name,
-          "give the strength scatter as a Weibull modulus or as a coefficient of variation, not "
-          "both");
+  requireYarn(
+      cv == 0.0 || strength_scatter.weibull_modulus == 0.0, name,
+      "give the strength scatter as a Weibull modulus or as a coefficient of variation, not "
+      "both");
   const double gauge = strength_scatter.gauge_length;
-  require(std::isfinite(gauge) && gauge > 0.0, name,
-          "gauge_length must be > 0 [m], got " + std::to_string(gauge));
+  requireYarn(std::isfinite(gauge) && gauge > 0.0, name,
+              "gauge_length must be > 0 [m], got " + std::to_string(gauge));
 }
 
 double YarnSpec::area() const {

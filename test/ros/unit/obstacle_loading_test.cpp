@@ -33,7 +33,7 @@ ParamValue param(const XmlRpc::XmlRpcValue& obstacle) {
 }
 
 /// what() of the ParameterError that loading `obstacle` throws ("" when none).
-std::string loadError(const XmlRpc::XmlRpcValue& obstacle) {
+std::string obstacleLoadError(const XmlRpc::XmlRpcValue& obstacle) {
   try {
     loadObstacleSpec(param(obstacle));
   } catch (const ParameterError& e) {
@@ -139,7 +139,7 @@ TEST(ObstacleSpecLoader, ErrorsNameTheParameterAndWhatIsAllowed) {
       {capsuleWith("position", list({2.0e4, 0.0, 0.0})), "obstacles[1].position"},
   };
   for (const auto& [obstacle, expected] : cases) {
-    const std::string error = loadError(obstacle);
+    const std::string error = obstacleLoadError(obstacle);
     EXPECT_NE(error.find(expected), std::string::npos) << error << "\nexpected: " << expected;
   }
 }

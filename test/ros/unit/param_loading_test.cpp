@@ -36,7 +36,7 @@ XmlRpc::XmlRpcValue withoutKey(XmlRpc::XmlRpcValue map, const std::string& key) 
 }
 
 /// what() of the ParameterError that loading `yarn` throws ("" when none).
-std::string loadError(const XmlRpc::XmlRpcValue& yarn, const ParamValue& presets = kNoPresets) {
+std::string yarnLoadError(const XmlRpc::XmlRpcValue& yarn, const ParamValue& presets = kNoPresets) {
   try {
     loadYarnSpec(yarnParam(yarn), presets);
   } catch (const ParameterError& e) {
@@ -74,11 +74,11 @@ TEST(YarnSpecLoader, LoadsStrengthScatterAsACoefficientOfVariation) {
   EXPECT_DOUBLE_EQ(
       loadYarnSpec(yarnParam(yarn), kNoPresets).strength_scatter.coefficient_of_variation, 0.08);
   yarn["weibull_modulus"] = 10.0;
-  EXPECT_NE(loadError(yarn).find("strength_cv"), std::string::npos) << loadError(yarn);
+  EXPECT_NE(yarnLoadError(yarn).find("strength_cv"), std::string::npos) << yarnLoadError(yarn);
   yarn = validYarn();
   yarn["strength_cv"] = 1.5;
-  EXPECT_NE(loadError(yarn).find("/node/yarns[0].strength_cv"), std::string::npos)
-      << loadError(yarn);
+  EXPECT_NE(yarnLoadError(yarn).find("/node/yarns[0].strength_cv"), std::string::npos)
+      << yarnLoadError(yarn);
 }
 
 TEST(YarnSpecLoader, LoadsTheGaugeLengthOfTheStrengthStatistics) {
@@ -87,8 +87,8 @@ TEST(YarnSpecLoader, LoadsTheGaugeLengthOfTheStrengthStatistics) {
   yarn["gauge_length"] = 0.25;
   EXPECT_DOUBLE_EQ(loadYarnSpec(yarnParam(yarn), kNoPresets).strength_scatter.gauge_length, 0.25);
   yarn["gauge_length"] = 0.0;
-  EXPECT_NE(loadError(yarn).find("/node/yarns[0].gauge_length"), std::string::npos)
-      << loadError(yarn);
+  EXPECT_NE(yarnLoadError(yarn).find("/node/yarns[0].gauge_length"), std::string::npos)
+      << yarnLoadError(yarn);
 }
 
 TEST(YarnSpecLoader, AcceptsIntegersForNumbers) {
@@ -100,7 +100,7 @@ TEST(YarnSpecLoader, AcceptsIntegersForNumbers) {
 TEST(YarnSpecLoader, ErrorNamesParameterValueAndAllowedRange) {
   XmlRpc::XmlRpcValue yarn = validYarn();
   yarn["radius"] = -0.5;
-  const std::string error = loadError(yarn);
+  const std::string error = yarnLoadError(yarn);
   EXPECT_NE(error.find("/node/yarns[0].radius"), std::string::npos) << error;
   EXPECT_NE(error.find("-0.5"), std::string::npos) << error;
   EXPECT_NE(error.find("in [1e-07, 1] [m]"), std::string::npos) << error;
@@ -124,26 +124,27 @@ TEST(YarnSpecLoader, RefusesValuesPastThePhysicalBounds) {
     XmlRpc::XmlRpcValue yarn = validYarn();
     if (key == "tex") yarn = withoutKey(yarn, "radius");
     yarn[key] = value;
-    const std::string error = loadError(yarn);
+    const std::string error = yarnLoadError(yarn);
     EXPECT_NE(error.find("/node/yarns[0]." + key), std::string::npos) << key << ": " << error;
   }
   XmlRpc::XmlRpcValue far = validYarn();  // start in bounds, but the end 1e4 m past them
   far["start"] = list({9.0e3, 0.0, 0.0});
   far["direction"] = list({1.0, 0.0, 0.0});
   far["length"] = 2.0e3;
-  EXPECT_NE(loadError(far).find("/node/yarns[0].length"), std::string::npos) << loadError(far);
+  EXPECT_NE(yarnLoadError(far).find("/node/yarns[0].length"), std::string::npos)
+      << yarnLoadError(far);
   XmlRpc::XmlRpcValue fine = validYarn();  // segments under 1 um
   fine["length"] = 1.0e-3;
   fine["num_vertices"] = 10000;
-  EXPECT_NE(loadError(fine).find("num_vertices"), std::string::npos) << loadError(fine);
+  EXPECT_NE(yarnLoadError(fine).find("num_vertices"), std::string::npos) << yarnLoadError(fine);
 }
 
 TEST(YarnSpecLoader, StartAndDirectionAreRequired) {
   for (const char* key : {"start", "direction"}) {
     XmlRpc::XmlRpcValue yarn = validYarn();
     yarn = withoutKey(yarn, key);
-    EXPECT_NE(loadError(yarn).find(std::string("key '") + key + "'"), std::string::npos)
-        << loadError(yarn);
+    EXPECT_NE(yarnLoadError(yarn).find(std::string("key '") + key + "'"), std::string::npos)
+        << yarnLoadError(yarn);
   }
 }
 
@@ -151,26 +152,26 @@ TEST(YarnSpecLoader, IntegralDoubleIsShownAsADouble) {
   // "seed = 0: expected an integer" contradicted itself: the value was 0.0.
   XmlRpc::XmlRpcValue yarn = validYarn();
   yarn["seed"] = 0.0;
-  EXPECT_NE(loadError(yarn).find("seed = 0.0: expected an integer"), std::string::npos)
-      << loadError(yarn);
+  EXPECT_NE(yarnLoadError(yarn).find("seed = 0.0: expected an integer"), std::string::npos)
+      << yarnLoadError(yarn);
 }
 
 TEST(YarnSpecLoader, RejectsWrongTypes) {
   XmlRpc::XmlRpcValue yarn = validYarn();
   yarn["num_vertices"] = 2.5;
-  EXPECT_NE(loadError(yarn).find("num_vertices"), std::string::npos);
+  EXPECT_NE(yarnLoadError(yarn).find("num_vertices"), std::string::npos);
   yarn = validYarn();
   yarn["name"] = 3;
-  EXPECT_NE(loadError(yarn).find("name"), std::string::npos);
+  EXPECT_NE(yarnLoadError(yarn).find("name"), std::string::npos);
   yarn = validYarn();
   yarn["start"] = list({0.0, 1.0});
-  EXPECT_NE(loadError(yarn).find("start"), std::string::npos);
+  EXPECT_NE(yarnLoadError(yarn).find("start"), std::string::npos);
 }
 
 TEST(YarnSpecLoader, RejectsUnknownKeysListingTheAllowedOnes) {
   XmlRpc::XmlRpcValue yarn = validYarn();
   yarn["lenght"] = 0.1;
-  const std::string error = loadError(yarn);
+  const std::string error = yarnLoadError(yarn);
   EXPECT_NE(error.find("unknown key 'lenght'"), std::string::npos) << error;
   EXPECT_NE(error.find("length"), std::string::npos) << error;
 }
@@ -178,26 +179,26 @@ TEST(YarnSpecLoader, RejectsUnknownKeysListingTheAllowedOnes) {
 TEST(YarnSpecLoader, RejectsPinnedIndicesOutOfRange) {
   XmlRpc::XmlRpcValue yarn = validYarn();
   yarn["pinned"] = list({0, 5});
-  EXPECT_NE(loadError(yarn).find("[-5, 4]"), std::string::npos);
+  EXPECT_NE(yarnLoadError(yarn).find("[-5, 4]"), std::string::npos);
   yarn["pinned"] = list({-6});
-  EXPECT_NE(loadError(yarn).find("pinned"), std::string::npos);
+  EXPECT_NE(yarnLoadError(yarn).find("pinned"), std::string::npos);
   yarn["pinned"] = list({-5, 4});
-  EXPECT_EQ(loadError(yarn), "");
+  EXPECT_EQ(yarnLoadError(yarn), "");
 }
 
 TEST(YarnSpecLoader, TexSizesTheYarnInsteadOfRadius) {
   XmlRpc::XmlRpcValue yarn = validYarn();
   yarn["tex"] = 20.0;
-  EXPECT_NE(loadError(yarn).find("either radius"), std::string::npos);
+  EXPECT_NE(yarnLoadError(yarn).find("either radius"), std::string::npos);
   yarn = validYarn();
   yarn["packing_fraction"] = 0.5;
-  EXPECT_NE(loadError(yarn).find("packing_fraction"), std::string::npos);
+  EXPECT_NE(yarnLoadError(yarn).find("packing_fraction"), std::string::npos);
 }
 
 TEST(YarnSpecLoader, RejectsZeroDirection) {
   XmlRpc::XmlRpcValue yarn = validYarn();
   yarn["direction"] = list({0.0, 0.0, 0.0});
-  EXPECT_NE(loadError(yarn).find("direction"), std::string::npos);
+  EXPECT_NE(yarnLoadError(yarn).find("direction"), std::string::npos);
 }
 
 TEST(MaterialLoader, RefusesDensityCurveAndViscosityPastTheBounds) {
@@ -205,16 +206,17 @@ TEST(MaterialLoader, RefusesDensityCurveAndViscosityPastTheBounds) {
   material["density"] = 1.0e-300;
   XmlRpc::XmlRpcValue yarn = validYarn();
   yarn["material"] = material;
-  EXPECT_NE(loadError(yarn).find("material.density"), std::string::npos) << loadError(yarn);
+  EXPECT_NE(yarnLoadError(yarn).find("material.density"), std::string::npos) << yarnLoadError(yarn);
   material = inlineMaterial();
   material["plastic_viscosity"] = 1.0e300;
   yarn["material"] = material;
-  EXPECT_NE(loadError(yarn).find("plastic_viscosity"), std::string::npos) << loadError(yarn);
+  EXPECT_NE(yarnLoadError(yarn).find("plastic_viscosity"), std::string::npos)
+      << yarnLoadError(yarn);
   material = inlineMaterial();
   material["stress_strain"] =
       list({list({0.0, 0.0}), list({1.0e-300, 1.0e8}), list({0.05, 3.0e8})});
   yarn["material"] = material;
-  EXPECT_NE(loadError(yarn).find("stress_strain"), std::string::npos) << loadError(yarn);
+  EXPECT_NE(yarnLoadError(yarn).find("stress_strain"), std::string::npos) << yarnLoadError(yarn);
 }
 
 TEST(MaterialLoader, RefusesACurveThatStiffensAfterYield) {
@@ -223,7 +225,7 @@ TEST(MaterialLoader, RefusesACurveThatStiffensAfterYield) {
   material["stress_strain"] = list({list({0.0, 0.0}), list({0.01, 1.0e8}), list({0.02, 5.0e8})});
   XmlRpc::XmlRpcValue yarn = validYarn();
   yarn["material"] = material;
-  const std::string error = loadError(yarn);
+  const std::string error = yarnLoadError(yarn);
   EXPECT_NE(error.find("material.stress_strain"), std::string::npos) << error;
   EXPECT_NE(error.find("less steep"), std::string::npos) << error;
 }
