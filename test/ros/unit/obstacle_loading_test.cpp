@@ -6,15 +6,16 @@
 #include <utility>
 #include <vector>
 
+#include "parameter_error_text.hpp"
 #include "xmlrpc_builders.hpp"
 #include "yarn_tearing/ros/obstacle_spec_loader.hpp"
-#include "yarn_tearing/ros/parameter_error.hpp"
 
 namespace yarn_tearing {
 namespace ros_layer {
 namespace {
 
 using testing::list;
+using testing::parameterErrorOf;
 
 XmlRpc::XmlRpcValue capsule() {
   XmlRpc::XmlRpcValue obstacle;
@@ -34,12 +35,7 @@ ParamValue param(const XmlRpc::XmlRpcValue& obstacle) {
 
 /// what() of the ParameterError that loading `obstacle` throws ("" when none).
 std::string obstacleLoadError(const XmlRpc::XmlRpcValue& obstacle) {
-  try {
-    loadObstacleSpec(param(obstacle));
-  } catch (const ParameterError& e) {
-    return e.what();
-  }
-  return "";
+  return parameterErrorOf([&] { loadObstacleSpec(param(obstacle)); });
 }
 
 TEST(ObstacleSpecLoader, LoadsAFixedCapsule) {

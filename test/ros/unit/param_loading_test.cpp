@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "parameter_error_text.hpp"
 #include "xmlrpc_builders.hpp"
 #include "yarn_tearing/ros/fabric_spec_loader.hpp"
 #include "yarn_tearing/ros/material_loader.hpp"
@@ -20,6 +21,7 @@ namespace {
 using testing::curve;
 using testing::inlineMaterial;
 using testing::list;
+using testing::parameterErrorOf;
 using testing::validYarn;
 
 const ParamValue kNoPresets("/node/materials", XmlRpc::XmlRpcValue());
@@ -37,12 +39,7 @@ XmlRpc::XmlRpcValue withoutKey(XmlRpc::XmlRpcValue map, const std::string& key) 
 
 /// what() of the ParameterError that loading `yarn` throws ("" when none).
 std::string yarnLoadError(const XmlRpc::XmlRpcValue& yarn, const ParamValue& presets = kNoPresets) {
-  try {
-    loadYarnSpec(yarnParam(yarn), presets);
-  } catch (const ParameterError& e) {
-    return e.what();
-  }
-  return "";
+  return parameterErrorOf([&] { loadYarnSpec(yarnParam(yarn), presets); });
 }
 
 TEST(YarnSpecLoader, LoadsAValidYarn) {
@@ -327,12 +324,8 @@ XmlRpc::XmlRpcValue fabricWithAFarCorner() {
 
 TEST(FabricSpecLoader, EveryCornerMustLieWithinTheBound) {
   const XmlRpc::XmlRpcValue fabric = fabricWithAFarCorner();
-  std::string error;
-  try {
-    loadFabricSpec(ParamValue("/node/fabrics[0]", fabric), kNoPresets);
-  } catch (const ParameterError& e) {
-    error = e.what();
-  }
+  const std::string error =
+      parameterErrorOf([&] { loadFabricSpec(ParamValue("/node/fabrics[0]", fabric), kNoPresets); });
   EXPECT_NE(error.find("/node/fabrics[0].warp_length"), std::string::npos) << error;
   EXPECT_NE(error.find("every corner"), std::string::npos) << error;
   XmlRpc::XmlRpcValue inside = fabric;
